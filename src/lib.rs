@@ -1,0 +1,19 @@
+//! # pathtracer: the CS184 PathTracer, step by step
+//!
+//! A test-driven Rust reference for the UC Berkeley CS184 PathTracer
+//! assignment (parts 3-1 and 3-2). Each module mirrors a part:
+//!
+//! | part | module | binary | doc |
+//! | --- | --- | --- | --- |
+//! | 1 ray generation | [`raygen`] (pinhole camera) | `part1-raygen` | `docs/01-raygen.md` |
+//! | 1 intersection | [`intersect`] (ray, hit, triangle, sphere) | `part1-raygen` | `docs/02-intersect.md` |
+//! | 2 BVH | [`bvh`] (build, traverse, validate) | `part2-bvh` | `docs/03-bvh.md` |
+//!
+//! Support modules: [`math`] (colours, floating-point helpers), [`scene`]
+//! (scene model, the COLLADA loader, built-in scenes), [`render`] (film,
+//! tiles, threads, progress, PNG/EXR output), [`cli`] (the course's flags).
+//!
+//! Conventions are in `docs/00-conventions.md`.
+
+pub mod math;
+pub mod scene;

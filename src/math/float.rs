@@ -1,0 +1,49 @@
+//! Floating-point helpers for robust geometry (pbrt-v4, section 6.8).
+
+/// Half the distance between 1 and the next `f32`: the unit roundoff u.
+pub const MACHINE_EPSILON: f32 = f32::EPSILON * 0.5;
+
+/// Conservative bound gamma(n) = n u / (1 - n u) on the relative error of
+/// `n` chained floating-point operations (pbrt-v4, eq. 6.23).
+pub const fn gamma(n: i32) -> f32 {
+    (n as f32 * MACHINE_EPSILON) / (1.0 - n as f32 * MACHINE_EPSILON)
+}
+
+/// The smallest `f32` greater than `v` (identity for +inf and NaN).
+pub fn next_float_up(v: f32) -> f32 {
+    if v.is_infinite() && v > 0.0 || v.is_nan() {
+        return v;
+    }
+    let v = if v == -0.0 { 0.0 } else { v };
+    let bits = v.to_bits();
+    let bits = if v >= 0.0 { bits + 1 } else { bits - 1 };
+    f32::from_bits(bits)
+}
+
+/// The largest `f32` smaller than `v` (identity for -inf and NaN).
+pub fn next_float_down(v: f32) -> f32 {
+    if v.is_infinite() && v < 0.0 || v.is_nan() {
+        return v;
+    }
+    let v = if v == 0.0 { -0.0 } else { v };
+    let bits = v.to_bits();
+    let bits = if v > 0.0 { bits - 1 } else { bits + 1 };
+    f32::from_bits(bits)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn next_float_moves_by_one_ulp() {
+        for v in [-2.5f32, -0.0, 0.0, 1e-30, 1.0, 3.0e7] {
+            assert!(next_float_up(v) > v);
+            assert!(next_float_down(v) < v);
+            assert_eq!(
+                next_float_down(next_float_up(v)),
+                if v == 0.0 { 0.0 } else { v }
+            );
+        }
+    }
+}

@@ -1,0 +1,1 @@
+//! Built-in scenes made in code.

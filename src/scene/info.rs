@@ -1,0 +1,1 @@
+//! `--info`: a one-item-per-line summary of a loaded scene.
