@@ -15,5 +15,10 @@
 //!
 //! Conventions are in `docs/00-conventions.md`.
 
+pub mod bvh;
+pub mod cli;
+pub mod intersect;
 pub mod math;
+pub mod raygen;
+pub mod render;
 pub mod scene;

@@ -1,8 +1,12 @@
-//! Shared mathematics: colours, orthonormal frames and floating-point helpers.
+//! Shared mathematics: colours, orthonormal frames, warps and floating-point helpers.
 //!
 //! Geometry is `f32` ([`glam::Vec3`]); colours are linear RGB in a [`Rgb`].
 
 pub mod color;
 pub mod float;
+pub mod frame;
+pub mod rng;
+pub mod warp;
 
 pub use color::{luminance, Rgb};
+pub use frame::Frame;

@@ -1,1 +1,225 @@
-//! Built-in scenes made in code.
+//! Built-in scenes made in code (no course data): the default Cornell box
+//! and the bumpy sphere of the ray-throughput benchmark.
+
+use std::f32::consts::PI;
+
+use glam::Vec3;
+
+use super::normals::area_weighted_vertex_normals;
+use super::{CameraInfo, Light, Material, MaterialId, Scene, Sphere, TriangleMesh};
+
+/// The name under which [`cornell_box`] appears in messages.
+pub const CORNELL_BOX: &str = "built-in: cornell-box";
+
+/// A Cornell box with two spheres, as the course frames its `CB*.dae`
+/// scenes: a box `[-1, 1] x [0, 1.5] x [-1, 1]` open towards +Z, red wall
+/// at -X, blue wall at +X, a 0.6 x 0.8 area light of radiance 10 under the
+/// ceiling (and an emissive quad in the same place, as the course files
+/// have), a diffuse sphere and a mirror sphere of radius 0.3.
+pub fn cornell_box() -> Scene {
+    let mut builder = MeshBuilder::default();
+    let white = builder.material(Material::Diffuse {
+        albedo: Vec3::splat(0.6),
+    });
+    let red = builder.material(Material::Diffuse {
+        albedo: Vec3::new(0.6, 0.2, 0.2),
+    });
+    let blue = builder.material(Material::Diffuse {
+        albedo: Vec3::new(0.2, 0.2, 0.6),
+    });
+    let light = builder.material(Material::Emission {
+        radiance: Vec3::splat(10.0),
+    });
+    let mirror = builder.material(Material::Mirror {
+        reflectance: Vec3::ONE,
+    });
+    let (x0, x1, y0, y1, z0, z1) = (-1.0, 1.0, 0.0, 1.5, -1.0, 1.0);
+    let corner = |x, y, z| Vec3::new(x, y, z);
+    // Each quad's corners are counter-clockwise seen from inside the box.
+    builder.quad(
+        white,
+        [
+            corner(x0, y0, z1),
+            corner(x1, y0, z1),
+            corner(x1, y0, z0),
+            corner(x0, y0, z0),
+        ],
+    );
+    builder.quad(
+        white,
+        [
+            corner(x0, y1, z0),
+            corner(x1, y1, z0),
+            corner(x1, y1, z1),
+            corner(x0, y1, z1),
+        ],
+    );
+    builder.quad(
+        white,
+        [
+            corner(x0, y0, z0),
+            corner(x1, y0, z0),
+            corner(x1, y1, z0),
+            corner(x0, y1, z0),
+        ],
+    );
+    builder.quad(
+        red,
+        [
+            corner(x0, y0, z1),
+            corner(x0, y0, z0),
+            corner(x0, y1, z0),
+            corner(x0, y1, z1),
+        ],
+    );
+    builder.quad(
+        blue,
+        [
+            corner(x1, y0, z0),
+            corner(x1, y0, z1),
+            corner(x1, y1, z1),
+            corner(x1, y1, z0),
+        ],
+    );
+    let ly = 1.49;
+    builder.quad(
+        light,
+        [
+            corner(-0.3, ly, -0.4),
+            corner(0.3, ly, -0.4),
+            corner(0.3, ly, 0.4),
+            corner(-0.3, ly, 0.4),
+        ],
+    );
+    let mut scene = builder.finish(CORNELL_BOX);
+    scene.spheres = vec![
+        Sphere {
+            center: Vec3::new(-0.45, 0.3, -0.35),
+            radius: 0.3,
+            material: mirror,
+        },
+        Sphere {
+            center: Vec3::new(0.45, 0.3, 0.25),
+            radius: 0.3,
+            material: white,
+        },
+    ];
+    scene.lights = vec![Light::Area {
+        radiance: Vec3::splat(10.0),
+        center: Vec3::new(0.0, ly, 0.0),
+        direction: -Vec3::Y,
+        dim_x: Vec3::new(0.6, 0.0, 0.0),
+        dim_y: Vec3::new(0.0, 0.0, 0.8),
+    }];
+    scene.camera = CameraInfo {
+        dir_to_camera: Vec3::Z,
+        hfov_deg: 49.13434,
+        vfov_deg: 37.8493,
+        znear: 0.1,
+        zfar: 100.0,
+    };
+    scene
+}
+
+/// The benchmark's bumpy sphere: vertices `(r sin t cos p, r cos t, r sin t sin p)`
+/// with `r = 1 + 0.08 sin 7t sin 9p + 0.03 sin 23t cos 31p + 0.01 cos 97t sin 89p`
+/// on a grid of `phi_steps` in `p` over `[0, 2 pi]` and `theta_steps` in `t`
+/// over `[0, pi]`. Cell `(i, j)` gives `(v[i,j], v[i+1,j], v[i,j+1])` unless
+/// `j` is the first row and `(v[i+1,j], v[i+1,j+1], v[i,j+1])` unless it is
+/// the last, so no triangle degenerates at the poles:
+/// `2 phi_steps (theta_steps - 1)` triangles (1,046,528 for 1024 x 512).
+pub fn bumpy_sphere(phi_steps: u32, theta_steps: u32) -> Scene {
+    let mut builder = MeshBuilder::default();
+    let material = builder.material(Material::DEFAULT);
+    let index = |i: u32, j: u32| i * (theta_steps + 1) + j;
+    for i in 0..=phi_steps {
+        let p = 2.0 * PI * i as f32 / phi_steps as f32;
+        for j in 0..=theta_steps {
+            let t = PI * j as f32 / theta_steps as f32;
+            let r = 1.0
+                + 0.08 * (7.0 * t).sin() * (9.0 * p).sin()
+                + 0.03 * (23.0 * t).sin() * (31.0 * p).cos()
+                + 0.01 * (97.0 * t).cos() * (89.0 * p).sin();
+            builder.mesh.positions.push(Vec3::new(
+                r * t.sin() * p.cos(),
+                r * t.cos(),
+                r * t.sin() * p.sin(),
+            ));
+        }
+    }
+    for i in 0..phi_steps {
+        for j in 0..theta_steps {
+            if j != 0 {
+                builder.triangle(material, [index(i, j), index(i + 1, j), index(i, j + 1)]);
+            }
+            if j + 1 != theta_steps {
+                builder.triangle(
+                    material,
+                    [index(i + 1, j), index(i + 1, j + 1), index(i, j + 1)],
+                );
+            }
+        }
+    }
+    builder.finish("built-in: bumpy-sphere")
+}
+
+/// Collects triangles and materials, then computes the course's normals.
+#[derive(Default)]
+struct MeshBuilder {
+    mesh: TriangleMesh,
+    materials: Vec<Material>,
+}
+
+impl MeshBuilder {
+    fn material(&mut self, m: Material) -> MaterialId {
+        self.materials.push(m);
+        (self.materials.len() - 1) as MaterialId
+    }
+
+    fn triangle(&mut self, material: MaterialId, vertices: [u32; 3]) {
+        self.mesh.triangles.push(vertices);
+        self.mesh.materials.push(material);
+    }
+
+    /// Two triangles over four corners given in order around the quad.
+    fn quad(&mut self, material: MaterialId, corners: [Vec3; 4]) {
+        let base = self.mesh.positions.len() as u32;
+        self.mesh.positions.extend(corners);
+        self.triangle(material, [base, base + 1, base + 2]);
+        self.triangle(material, [base, base + 2, base + 3]);
+    }
+
+    fn finish(mut self, name: &str) -> Scene {
+        self.mesh.normals =
+            area_weighted_vertex_normals(&self.mesh.positions, &self.mesh.triangles);
+        Scene {
+            source: name.to_string(),
+            mesh: self.mesh,
+            materials: self.materials,
+            ..Scene::default()
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bumpy_sphere_has_the_documented_triangle_count() {
+        let s = bumpy_sphere(16, 8);
+        assert_eq!(s.mesh.triangles.len(), 2 * 16 * 7);
+        assert_eq!(s.mesh.normals.len(), s.mesh.positions.len());
+    }
+
+    #[test]
+    fn cornell_box_faces_point_inwards() {
+        let s = cornell_box();
+        let centre = Vec3::new(0.0, 0.75, 0.0);
+        for &[a, b, c] in &s.mesh.triangles {
+            let p = |i: u32| s.mesh.positions[i as usize];
+            let n = (p(b) - p(a)).cross(p(c) - p(a));
+            assert!(n.dot(centre - p(a)) > 0.0, "triangle {a} {b} {c} faces out");
+        }
+    }
+}

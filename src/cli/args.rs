@@ -1,0 +1,126 @@
+//! The flags students know (cs184-format.md, section 7), parsed by clap.
+
+use std::path::{Path, PathBuf};
+
+use clap::Parser;
+
+use crate::render::RenderSettings;
+use crate::scene::{builtin, Scene, SceneError};
+
+/// Largest accepted image side, pixels.
+pub const MAX_SIDE: u32 = 1 << 14;
+
+/// The course's flags that apply to parts 1 and 2.
+#[derive(Parser, Clone, Debug, PartialEq)]
+#[command(version, about)]
+pub struct CourseArgs {
+    /// Scene file (COLLADA .dae); the built-in Cornell box when absent.
+    pub scene: Option<PathBuf>,
+
+    /// Camera rays per pixel.
+    #[arg(short = 's', value_name = "N", default_value_t = 1,
+          value_parser = clap::value_parser!(u32).range(1..=1 << 20))]
+    pub samples: u32,
+
+    /// Worker threads (default: every core).
+    #[arg(short = 't', value_name = "N", value_parser = clap::value_parser!(u16).range(1..))]
+    pub threads: Option<u16>,
+
+    /// Output size in pixels.
+    #[arg(short = 'r', num_args = 2, value_names = ["WIDTH", "HEIGHT"], default_values_t = [800, 600],
+          value_parser = clap::value_parser!(u32).range(1..=MAX_SIDE as i64))]
+    pub resolution: Vec<u32>,
+
+    /// Output image: PNG (tone mapped) or .exr (linear radiance).
+    /// Default: the scene's name with .png, in the current directory.
+    #[arg(short = 'f', value_name = "FILE")]
+    pub output: Option<PathBuf>,
+
+    /// Print what the scene holds, one item a line, and exit.
+    #[arg(long)]
+    pub info: bool,
+
+    /// Seed of the render's random numbers.
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+}
+
+impl CourseArgs {
+    pub fn width(&self) -> u32 {
+        self.resolution[0]
+    }
+
+    pub fn height(&self) -> u32 {
+        self.resolution[1]
+    }
+
+    /// The scene file's contents, or the built-in Cornell box.
+    pub fn load_scene(&self) -> Result<Scene, SceneError> {
+        match &self.scene {
+            Some(path) => crate::scene::load(path),
+            None => Ok(builtin::cornell_box()),
+        }
+    }
+
+    /// Where the image goes: `-f`, else `<scene name>.png`.
+    pub fn output_path(&self) -> PathBuf {
+        self.output.clone().unwrap_or_else(|| {
+            let stem = self
+                .scene
+                .as_deref()
+                .and_then(Path::file_stem)
+                .map_or("cornell-box".into(), |s| s.to_string_lossy().into_owned());
+            PathBuf::from(format!("{stem}.png"))
+        })
+    }
+
+    /// The render settings these flags ask for (progress bar on).
+    pub fn render_settings(&self) -> RenderSettings {
+        RenderSettings {
+            width: self.width(),
+            height: self.height(),
+            samples_per_pixel: self.samples,
+            threads: self.threads.map(usize::from),
+            seed: self.seed,
+            progress: true,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn course_flags_parse() {
+        let a = CourseArgs::try_parse_from([
+            "p", "-s", "16", "-t", "2", "-r", "480", "360", "-f", "x.png", "s.dae",
+        ])
+        .unwrap();
+        assert_eq!(
+            (a.samples, a.threads, a.width(), a.height()),
+            (16, Some(2), 480, 360)
+        );
+        assert_eq!(a.output_path(), PathBuf::from("x.png"));
+        assert_eq!(a.scene, Some(PathBuf::from("s.dae")));
+    }
+
+    #[test]
+    fn defaults_are_the_course_defaults() {
+        let a = CourseArgs::try_parse_from(["p"]).unwrap();
+        assert_eq!((a.samples, a.width(), a.height()), (1, 800, 600));
+        assert_eq!(a.output_path(), PathBuf::from("cornell-box.png"));
+    }
+
+    #[test]
+    fn bad_values_are_refused() {
+        for bad in [
+            &["p", "-r", "0", "10"][..],
+            &["p", "-s", "0"],
+            &["p", "-r", "640"],
+            &["p", "-t", "x"],
+        ] {
+            assert!(CourseArgs::try_parse_from(bad).is_err(), "{bad:?}");
+        }
+    }
+}

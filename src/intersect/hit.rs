@@ -1,0 +1,80 @@
+//! A ray-surface hit, and the one way to leave a surface: [`Hit::spawn_ray`].
+//!
+//! Leaving a surface: the computed hit point `p` is off the true surface by
+//! at most `p_error` per axis. Moving the origin along the geometric normal
+//! by `d = |n_g| . p_error` (then rounding away from the surface) puts it
+//! on the correct side whatever the rounding, so the new ray cannot hit the
+//! surface it starts on (pbrt-v4, section 6.8.6). The offset scales with
+//! the magnitude of the coordinates, so it works from tiny to huge scenes.
+
+use glam::Vec3;
+
+use crate::math::float::{next_float_down, next_float_up};
+use crate::scene::MaterialId;
+
+use super::Ray;
+
+/// Shadow rays stop this fraction short of their target, so a point sampled
+/// on a light does not occlude itself.
+pub const SHADOW_EPSILON: f32 = 1e-4;
+
+/// Where and how a ray met a surface.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Hit {
+    /// Ray parameter of the hit, scene units.
+    pub t: f32,
+    /// The hit point, world space.
+    pub p: Vec3,
+    /// Per-axis bound on the absolute rounding error of `p`.
+    pub p_error: Vec3,
+    /// Shading normal: for triangles the barycentric interpolation of the
+    /// course's vertex normals, for spheres the outward normal. Unit length.
+    /// Not flipped towards the ray.
+    pub n: Vec3,
+    /// Geometric normal of the surface (triangle winding / sphere outward), unit length.
+    pub ng: Vec3,
+    /// The surface's material.
+    pub material: MaterialId,
+    /// Primitive id: triangle index, or number of triangles + sphere index.
+    pub primitive: u32,
+}
+
+impl Hit {
+    /// The hit point pushed off the surface to the side `w` points to.
+    pub fn offset_origin(&self, w: Vec3) -> Vec3 {
+        let d = self.ng.abs().dot(self.p_error);
+        let mut offset = d * self.ng;
+        if w.dot(self.ng) < 0.0 {
+            offset = -offset;
+        }
+        let mut po = self.p + offset;
+        // Round away from the surface, so the sum cannot fall back onto it.
+        for axis in 0..3 {
+            if offset[axis] > 0.0 {
+                po[axis] = next_float_up(po[axis]);
+            } else if offset[axis] < 0.0 {
+                po[axis] = next_float_down(po[axis]);
+            }
+        }
+        po
+    }
+
+    /// A ray leaving the surface in the unit direction `wi`.
+    #[doc(alias = "spawn_ray_from")]
+    pub fn spawn_ray(&self, wi: Vec3) -> Ray {
+        Ray::new(self.offset_origin(wi), wi)
+    }
+
+    /// A (shadow) ray from the surface towards `target`, stopping just short of it.
+    pub fn spawn_ray_to(&self, target: Vec3) -> Ray {
+        let origin = self.offset_origin(target - self.p);
+        let to_target = target - origin;
+        let distance = to_target.length();
+        Ray {
+            origin,
+            dir: to_target / distance,
+            t_min: 0.0,
+            t_max: distance * (1.0 - SHADOW_EPSILON),
+        }
+    }
+}

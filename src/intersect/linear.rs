@@ -1,0 +1,36 @@
+//! Part 1's intersector: test the ray against every primitive, keep the closest.
+//! Cost O(N) per ray; the reference every acceleration structure is checked against.
+
+use super::{Hit, Intersector, Primitives, Ray};
+
+/// Closest hit by testing every primitive.
+pub struct LinearScan<'a> {
+    pub primitives: &'a Primitives,
+}
+
+impl<'a> LinearScan<'a> {
+    pub fn new(primitives: &'a Primitives) -> Self {
+        LinearScan { primitives }
+    }
+}
+
+impl Intersector for LinearScan<'_> {
+    fn intersect(&self, ray: &Ray) -> Option<Hit> {
+        let mut t_max = ray.t_max;
+        let mut best = None;
+        for (id, shape) in self.primitives.shapes.iter().enumerate() {
+            if let Some(hit) = shape.intersect(ray, t_max) {
+                t_max = hit.t;
+                best = Some((id as u32, hit));
+            }
+        }
+        best.map(|(id, hit)| self.primitives.finish_hit(id, ray, hit))
+    }
+
+    fn occluded(&self, ray: &Ray) -> bool {
+        self.primitives
+            .shapes
+            .iter()
+            .any(|s| s.intersect(ray, ray.t_max).is_some())
+    }
+}
