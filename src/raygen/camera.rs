@@ -152,11 +152,10 @@ mod tests {
     #[test]
     fn cornell_box_framing_matches_the_course() {
         let cam = Camera::course_placement(&cornell_info(), &cornell_bounds(), 480, 360);
-        assert!(
-            cam.position.distance(Vec3::new(0.0, 0.75, 4.8)) < 1e-4,
-            "{}",
-            cam.position
-        );
+        // 1.5 |extent| = 1.5 sqrt(2^2 + 1.5^2 + 2^2) = 4.802 (the course's "4.80").
+        let distance = 1.5 * 10.25f32.sqrt();
+        let expected = Vec3::new(0.0, 0.75, distance);
+        assert!(cam.position.distance(expected) < 1e-5, "{}", cam.position);
         assert!((cam.hfov_deg - 30.7).abs() < 0.05, "{}", cam.hfov_deg);
         assert!((cam.vfov_deg - 23.2).abs() < 0.05, "{}", cam.vfov_deg);
         let cam = Camera::course_placement(&cornell_info(), &cornell_bounds(), 800, 600);
