@@ -12,7 +12,7 @@ pub const MAX_SIDE: u32 = 1 << 14;
 
 /// The course's flags that apply to parts 1 and 2.
 #[derive(Parser, Clone, Debug, PartialEq)]
-#[command(version, about)]
+#[command(version, about, args_override_self = true)]
 pub struct CourseArgs {
     /// Scene file (COLLADA .dae); the built-in Cornell box when absent.
     pub scene: Option<PathBuf>,

@@ -1,0 +1,88 @@
+//! Snapshot tests: a small render of the built-in scene by each binary's
+//! driver, summarised as the mean linear radiance of 12 x 9 blocks and
+//! compared with the snapshot under `golden/` within a tolerance, so a
+//! harmless change of floating-point order does not fail them.
+//!
+//! A new or changed snapshot is reviewed with `cargo insta review`
+//! (or accepted with `INSTA_UPDATE=always cargo test --release --test snapshots`).
+
+use std::path::Path;
+
+use clap::Parser;
+use pathtracer::cli::{drivers, CourseArgs};
+use pathtracer::math::Rgb;
+use pathtracer::render::Film;
+
+const COLS: u32 = 12;
+const ROWS: u32 = 9;
+/// Largest accepted difference of a block mean, per channel (linear radiance).
+const TOLERANCE: f32 = 2e-3;
+
+/// Renders with `driver` into a temporary EXR and reads it back.
+fn render_with(driver: fn(&CourseArgs) -> Result<(), Box<dyn std::error::Error>>, flags: &[&str]) -> Film {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("render.exr");
+    let mut argv = vec!["test", "-r", "480", "360", "-t", "2", "-f", out.to_str().unwrap()];
+    argv.extend(flags);
+    driver(&CourseArgs::parse_from(argv)).unwrap();
+    let image = image::open(&out).unwrap().to_rgb32f();
+    Film {
+        width: image.width(),
+        height: image.height(),
+        pixels: image.pixels().map(|p| Rgb::from_array(p.0)).collect(),
+    }
+}
+
+fn summary(film: &Film) -> String {
+    film.block_means(COLS, ROWS)
+        .chunks(COLS as usize)
+        .map(|row| row.iter().map(|c| format!("{:.4} {:.4} {:.4}", c.x, c.y, c.z)).collect::<Vec<_>>().join(" | "))
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+fn numbers(text: &str) -> Vec<f32> {
+    text.split(|c: char| c.is_whitespace() || c == '|')
+        .filter_map(|t| t.parse().ok())
+        .collect()
+}
+
+/// Passes when the stored snapshot agrees within [`TOLERANCE`]; otherwise
+/// lets insta fail and record the new snapshot for review.
+fn assert_close_to_snapshot(name: &str, film: &Film) {
+    assert_eq!(film.non_finite_count(), 0, "NaN or infinite pixels");
+    let golden = Path::new(env!("CARGO_MANIFEST_DIR")).join("golden");
+    let text = summary(film);
+    if let Ok(stored) = std::fs::read_to_string(golden.join(format!("{name}.snap"))) {
+        let body = stored.splitn(3, "---").nth(2).unwrap_or("");
+        let (old, new) = (numbers(body), numbers(&text));
+        if old.len() == new.len() && old.iter().zip(&new).all(|(a, b)| (a - b).abs() <= TOLERANCE) {
+            return;
+        }
+    }
+    insta::with_settings!({ snapshot_path => golden, prepend_module_to_snapshot => false }, {
+        insta::assert_snapshot!(name, text);
+    });
+}
+
+#[test]
+fn part1_raygen_normal_shading() {
+    assert_close_to_snapshot("part1-raygen", &render_with(drivers::part1, &[]));
+}
+
+#[test]
+fn part2_bvh_normal_shading() {
+    assert_close_to_snapshot("part2-bvh", &render_with(drivers::part2, &[]));
+}
+
+#[test]
+fn pathtracer_default_render() {
+    assert_close_to_snapshot("pathtracer", &render_with(drivers::pathtracer, &["-s", "4"]));
+}
+
+#[test]
+fn renders_do_not_depend_on_the_thread_count() {
+    let one = render_with(drivers::pathtracer, &["-s", "4", "-t", "1"]);
+    let two = render_with(drivers::pathtracer, &["-s", "4", "-t", "2"]);
+    assert_eq!(one, two);
+}
