@@ -45,6 +45,22 @@ pub struct CourseArgs {
     pub seed: u64,
 }
 
+/// `part2-bvh`'s flags: the course's, plus the benchmarks.
+#[derive(Parser, Clone, Debug, PartialEq)]
+#[command(version, about, args_override_self = true)]
+pub struct BvhArgs {
+    #[command(flatten)]
+    pub course: CourseArgs,
+
+    /// Run the ray-throughput benchmark (1M triangles) instead of rendering.
+    #[arg(long)]
+    pub bench: bool,
+
+    /// Print build time and ray rates against triangle count, as a table.
+    #[arg(long)]
+    pub scaling: bool,
+}
+
 impl CourseArgs {
     pub fn width(&self) -> u32 {
         self.resolution[0]

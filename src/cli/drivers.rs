@@ -222,3 +222,20 @@ pub fn bvh_benchmark(threads: Option<usize>) -> Result<()> {
     }
     Ok(())
 }
+
+/// `part2-bvh --scaling`: build time and one-thread ray rates of the
+/// benchmark's sphere at growing triangle counts, as a Markdown table.
+pub fn bvh_scaling() -> Result<()> {
+    use crate::bvh::throughput::{build_benchmark_bvh, measure, primary_rays, random_rays, RaySet};
+    println!("| triangles | build (s) | primary 1T (Mrays/s) | random 1T (Mrays/s) |");
+    println!("| ---: | ---: | ---: | ---: |");
+    for k in 0..6 {
+        let (phi, theta) = (32 << k, 16 << k);
+        let (accel, build) = build_benchmark_bvh(phi, theta);
+        let rate = |name, rays| measure(&accel, &RaySet { name, rays }, 1).mrays_per_second;
+        let primary = rate("primary", primary_rays(512));
+        let random = rate("random", random_rays(1 << 18));
+        println!("| {} | {build:.4} | {primary:.2} | {random:.2} |", accel.primitives.len());
+    }
+    Ok(())
+}
