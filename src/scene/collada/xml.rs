@@ -69,7 +69,7 @@ impl<'a, 'input> Doc<'a, 'input> {
             return Err(self.err(
                 node,
                 format!(
-                    "{attr}=\"{url}\" refers to a <{}>, expected a <{expected}>",
+                    "{attr}=\"{url}\" refers to element <{}>, expected element <{expected}>",
                     target.tag_name().name()
                 ),
             ));
@@ -123,6 +123,9 @@ pub fn first_element<'a, 'input>(node: Node<'a, 'input>) -> Option<Node<'a, 'inp
     node.children().find(Node::is_element)
 }
 
+/// Longest element path printed in full; deeper paths elide their middle.
+const MAX_PATH_STEPS: usize = 12;
+
 /// The path of `node` below the `<COLLADA>` root, for error messages.
 pub fn element_path(node: Node) -> String {
     let mut parts: Vec<String> = node
@@ -131,6 +134,11 @@ pub fn element_path(node: Node) -> String {
         .map(step)
         .collect();
     parts.reverse();
+    // Keep messages readable for absurdly deep nesting.
+    if parts.len() > MAX_PATH_STEPS {
+        let hidden = parts.len() - MAX_PATH_STEPS;
+        parts.splice(4..4 + hidden, [format!("...({hidden} more)...")]);
+    }
     if parts.is_empty() && node.is_element() {
         // The root element itself.
         return node.tag_name().name().to_string();
@@ -192,7 +200,7 @@ mod tests {
         let e = doc.resolve(get("c"), "url", "geometry").unwrap_err();
         assert!(e.problem.contains("dangling"), "{e}");
         let e = doc.resolve(get("d"), "url", "material").unwrap_err();
-        assert!(e.problem.contains("expected a <material>"), "{e}");
+        assert!(e.problem.contains("expected element <material>"), "{e}");
         assert_eq!(e.element, "d");
     }
 }
