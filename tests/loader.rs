@@ -283,3 +283,24 @@ fn the_minimal_scene_loads_as_computed_by_hand() {
     assert_eq!((cam.hfov_deg, cam.znear, cam.zfar), (40.0, 0.1, 50.0));
     assert!((cam.vfov_deg - vfov).abs() < 1e-4);
 }
+
+#[test]
+fn without_a_scene_element_the_first_visual_scene_is_used() {
+    let text = common::corrupt(
+        r##"<scene><instance_visual_scene url="#main"/></scene>"##,
+        "",
+    );
+    let scene = collada::load_str(&text, "minimal.dae").unwrap();
+    assert_eq!((scene.mesh.triangles.len(), scene.spheres.len()), (4, 1));
+}
+
+#[test]
+fn an_unbound_symbol_warns_and_uses_the_default_material() {
+    let text = common::corrupt(r#"symbol="shine""#, r#"symbol="sheen""#);
+    let scene = collada::load_str(&text, "minimal.dae").unwrap();
+    assert_eq!(
+        scene.materials[scene.mesh.materials[3] as usize],
+        Material::DEFAULT
+    );
+    assert!(scene.warnings.len() == 1 && scene.warnings[0].contains("\"shine\""));
+}
