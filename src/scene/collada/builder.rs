@@ -1,0 +1,111 @@
+//! Accumulates the [`Scene`] while the visual scene is walked: places
+//! meshes and spheres in world space and keeps one [`Material`] per
+//! `<material>` element.
+//!
+//! - Mesh positions land at `G * (T * (p, 1)).xyz`; every instance appends
+//!   its own copy of the vertices, so meshes never share vertices and each
+//!   keeps its connectivity. The file's normals are ignored: [`finish`]
+//!   rebuilds area-weighted vertex normals over the merged mesh, as the
+//!   course does.
+//! - A sphere's centre is `G * T * origin` and its radius is scaled by
+//!   `|G * T * (1, 0, 0, 0)|` (G preserves lengths).
+//! - Materials are deduplicated by the `<material>` element they come from;
+//!   geometry with no bound material shares one [`Material::DEFAULT`].
+//!
+//! [`finish`]: SceneBuilder::finish
+
+use std::collections::HashMap;
+
+use glam::Vec3;
+use roxmltree::Node;
+
+use super::super::normals::area_weighted_vertex_normals;
+use super::super::{Material, MaterialId, Scene, SceneError, Sphere};
+use super::material::material;
+use super::mesh::LocalMesh;
+use super::transform::Placement;
+use super::xml::Doc;
+
+/// The scene under construction.
+pub struct SceneBuilder {
+    pub scene: Scene,
+    /// Material index by `<material>` id; `None` is the default material.
+    ids: HashMap<Option<String>, MaterialId>,
+}
+
+impl SceneBuilder {
+    pub fn new(source: &str) -> Self {
+        SceneBuilder {
+            scene: Scene {
+                source: source.to_string(),
+                ..Scene::default()
+            },
+            ids: HashMap::new(),
+        }
+    }
+
+    /// The index of the material a `<material>` element describes (or of
+    /// the default material for `None`), reading it on first use.
+    pub fn material_id(
+        &mut self,
+        doc: &Doc,
+        element: Option<Node>,
+    ) -> Result<MaterialId, SceneError> {
+        let key = element.map(|e| e.attribute("id").unwrap_or("").to_string());
+        if let Some(&id) = self.ids.get(&key) {
+            return Ok(id);
+        }
+        let value = match element {
+            Some(e) => material(doc, e)?,
+            None => Material::DEFAULT,
+        };
+        let id = MaterialId::try_from(self.scene.materials.len())
+            .map_err(|_| SceneError::new(doc.file, "", "too many materials"))?;
+        self.scene.materials.push(value);
+        self.ids.insert(key, id);
+        Ok(id)
+    }
+
+    /// Appends `local` placed by `place`; `materials[k]` is the material of
+    /// `local.parts[k]`.
+    pub fn add_mesh(
+        &mut self,
+        doc: &Doc,
+        local: &LocalMesh,
+        place: &Placement,
+        materials: &[MaterialId],
+    ) -> Result<(), SceneError> {
+        let mesh = &mut self.scene.mesh;
+        // Local indices are below local.positions.len(), so they fit too.
+        let base = mesh.positions.len();
+        if u32::try_from(base + local.positions.len()).is_err() {
+            return Err(SceneError::new(doc.file, "", "more than 2^32 vertices"));
+        }
+        let base = base as u32;
+        mesh.positions
+            .extend(local.positions.iter().map(|&p| place.point(p)));
+        for (part, &material) in local.parts.iter().zip(materials) {
+            for &[a, b, c] in &part.triangles {
+                mesh.triangles.push([base + a, base + b, base + c]);
+                mesh.materials.push(material);
+            }
+        }
+        Ok(())
+    }
+
+    /// Appends a sphere of file-space `radius` centred on the node's origin.
+    pub fn add_sphere(&mut self, radius: f32, place: &Placement, material: MaterialId) {
+        self.scene.spheres.push(Sphere {
+            center: place.point(Vec3::ZERO),
+            radius: radius * place.vector(Vec3::X).length(),
+            material,
+        });
+    }
+
+    /// The finished scene, with the course's rebuilt vertex normals.
+    pub fn finish(mut self) -> Scene {
+        let mesh = &mut self.scene.mesh;
+        mesh.normals = area_weighted_vertex_normals(&mesh.positions, &mesh.triangles);
+        self.scene
+    }
+}

@@ -1,0 +1,56 @@
+//! Fuzz-style property tests of the COLLADA loader: truncated, corrupted
+//! and cut-up scene text loads or fails with an error, and never panics.
+
+mod common;
+
+use pathtracer::scene::collada;
+use proptest::prelude::*;
+
+use common::MINIMAL;
+
+const FILE: &str = "minimal.dae";
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(512))]
+
+    /// Any prefix of a valid file loads or fails cleanly.
+    #[test]
+    fn truncation_never_panics(cut in 0..MINIMAL.len()) {
+        let _ = collada::load_str(&MINIMAL[..cut], FILE);
+    }
+
+    /// Overwriting random bytes with random characters loads or fails cleanly.
+    #[test]
+    fn corruption_never_panics(
+        edits in prop::collection::vec((0..MINIMAL.len(), prop::sample::select(
+            b"0123456789 .-e<>/\"#=xNa\n".to_vec())), 1..6)
+    ) {
+        let mut bytes = MINIMAL.as_bytes().to_vec();
+        for (at, byte) in edits {
+            bytes[at] = byte;
+        }
+        let text = String::from_utf8_lossy(&bytes);
+        let _ = collada::load_str(&text, FILE);
+    }
+
+    /// Any prefix of a course file loads or fails cleanly.
+    #[test]
+    fn course_file_truncation_never_panics(fraction in 0.0f64..1.0) {
+        if let Some(dir) = common::course_dir() {
+            let text = std::fs::read_to_string(dir.join("CBspheres.dae")).unwrap();
+            let mut cut = (text.len() as f64 * fraction) as usize;
+            while !text.is_char_boundary(cut) {
+                cut -= 1;
+            }
+            let _ = collada::load_str(&text[..cut], "CBspheres.dae");
+        }
+    }
+
+    /// Deleting a random span loads or fails cleanly.
+    #[test]
+    fn deletion_never_panics(start in 0..MINIMAL.len(), len in 0usize..200) {
+        let end = (start + len).min(MINIMAL.len());
+        let text = format!("{}{}", &MINIMAL[..start], &MINIMAL[end..]);
+        let _ = collada::load_str(&text, FILE);
+    }
+}
