@@ -15,9 +15,10 @@ fn build(c: &mut Criterion) {
     for (phi, theta) in [(256, 128), (1024, 512)] {
         let primitives = Primitives::from_scene(&bumpy_sphere(phi, theta));
         group.throughput(Throughput::Elements(primitives.len() as u64));
-        group.bench_function(format!("bumpy sphere {} triangles", primitives.len()), |b| {
-            b.iter_batched(|| primitives.clone(), BvhAccel::new, BatchSize::LargeInput)
-        });
+        group.bench_function(
+            format!("bumpy sphere {} triangles", primitives.len()),
+            |b| b.iter_batched(|| primitives.clone(), BvhAccel::new, BatchSize::LargeInput),
+        );
     }
     group.finish();
 }
@@ -25,7 +26,10 @@ fn build(c: &mut Criterion) {
 fn traverse(c: &mut Criterion) {
     let accel = BvhAccel::new(Primitives::from_scene(&bumpy_sphere(1024, 512)));
     let mut group = c.benchmark_group("closest hit, 1M triangles");
-    for (name, rays) in [("primary", primary_rays(256)), ("random", random_rays(1 << 16))] {
+    for (name, rays) in [
+        ("primary", primary_rays(256)),
+        ("random", random_rays(1 << 16)),
+    ] {
         group.throughput(Throughput::Elements(rays.len() as u64));
         group.bench_function(name, |b| {
             b.iter(|| rays.iter().filter(|r| accel.intersect(r).is_some()).count())

@@ -19,10 +19,22 @@ const ROWS: u32 = 9;
 const TOLERANCE: f32 = 2e-3;
 
 /// Renders with `driver` into a temporary EXR and reads it back.
-fn render_with(driver: fn(&CourseArgs) -> Result<(), Box<dyn std::error::Error>>, flags: &[&str]) -> Film {
+fn render_with(
+    driver: fn(&CourseArgs) -> Result<(), Box<dyn std::error::Error>>,
+    flags: &[&str],
+) -> Film {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("render.exr");
-    let mut argv = vec!["test", "-r", "480", "360", "-t", "2", "-f", out.to_str().unwrap()];
+    let mut argv = vec![
+        "test",
+        "-r",
+        "480",
+        "360",
+        "-t",
+        "2",
+        "-f",
+        out.to_str().unwrap(),
+    ];
     argv.extend(flags);
     driver(&CourseArgs::parse_from(argv)).unwrap();
     let image = image::open(&out).unwrap().to_rgb32f();
@@ -36,7 +48,12 @@ fn render_with(driver: fn(&CourseArgs) -> Result<(), Box<dyn std::error::Error>>
 fn summary(film: &Film) -> String {
     film.block_means(COLS, ROWS)
         .chunks(COLS as usize)
-        .map(|row| row.iter().map(|c| format!("{:.4} {:.4} {:.4}", c.x, c.y, c.z)).collect::<Vec<_>>().join(" | "))
+        .map(|row| {
+            row.iter()
+                .map(|c| format!("{:.4} {:.4} {:.4}", c.x, c.y, c.z))
+                .collect::<Vec<_>>()
+                .join(" | ")
+        })
         .collect::<Vec<_>>()
         .join("\n")
 }
@@ -56,7 +73,12 @@ fn assert_close_to_snapshot(name: &str, film: &Film) {
     if let Ok(stored) = std::fs::read_to_string(golden.join(format!("{name}.snap"))) {
         let body = stored.splitn(3, "---").nth(2).unwrap_or("");
         let (old, new) = (numbers(body), numbers(&text));
-        if old.len() == new.len() && old.iter().zip(&new).all(|(a, b)| (a - b).abs() <= TOLERANCE) {
+        if old.len() == new.len()
+            && old
+                .iter()
+                .zip(&new)
+                .all(|(a, b)| (a - b).abs() <= TOLERANCE)
+        {
             return;
         }
     }
@@ -77,7 +99,10 @@ fn part2_bvh_normal_shading() {
 
 #[test]
 fn pathtracer_default_render() {
-    assert_close_to_snapshot("pathtracer", &render_with(drivers::pathtracer, &["-s", "4"]));
+    assert_close_to_snapshot(
+        "pathtracer",
+        &render_with(drivers::pathtracer, &["-s", "4"]),
+    );
 }
 
 #[test]

@@ -235,7 +235,10 @@ pub fn bvh_scaling() -> Result<()> {
         let rate = |name, rays| measure(&accel, &RaySet { name, rays }, 1).mrays_per_second;
         let primary = rate("primary", primary_rays(512));
         let random = rate("random", random_rays(1 << 18));
-        println!("| {} | {build:.4} | {primary:.2} | {random:.2} |", accel.primitives.len());
+        println!(
+            "| {} | {build:.4} | {primary:.2} | {random:.2} |",
+            accel.primitives.len()
+        );
     }
     Ok(())
 }

@@ -12,9 +12,10 @@
 //! keeps only the file's direction towards the camera `c_dir`, aims at the
 //! centre of the bounding box of all geometry and backs off to
 //! `1.5 |extent|` ([`Camera::course_placement`]). The field of view depends
-//! on the output size: the course fits the file's fov to an 800x600 window,
-//! keeps that screen distance in pixels, `D = 600 / (2 tan(vFov / 2))`, and
-//! for a `W x H` image uses `hFov = 2 atan(W / 2D)`, `vFov = 2 atan(H / 2D)`.
+//! on the output size: the course fits the file's fov to an 800x600 window
+//! ([`course_fov`]), keeps that screen distance in pixels,
+//! `D = 600 / (2 tan(vFov / 2))`, and for a `W x H` image uses
+//! `hFov = 2 atan(W / 2D)`, `vFov = 2 atan(H / 2D)`.
 
 use glam::{Mat3, Vec3};
 
@@ -81,7 +82,7 @@ impl Camera {
         let up = Vec3::new(0.0, if sin_phi > 0.0 { 1.0 } else { -1.0 }, 0.0);
         let x = up.cross(to_camera).normalize();
         let y = to_camera.cross(x).normalize();
-        let (hfov_deg, vfov_deg) = course_fov(info.vfov_deg, width, height);
+        let (hfov_deg, vfov_deg) = course_fov(info.hfov_deg, info.vfov_deg, width, height);
         Camera {
             position: target + distance * to_camera,
             c2w: Mat3::from_cols(x, y, to_camera),
@@ -114,9 +115,24 @@ impl Camera {
 }
 
 /// The course's output-size-dependent field of view (degrees) for a file
-/// whose vertical fov is `file_vfov_deg`.
-pub fn course_fov(file_vfov_deg: f32, width: u32, height: u32) -> (f32, f32) {
-    let screen_distance = COURSE_WINDOW.1 as f32 / (2.0 * (0.5 * file_vfov_deg.to_radians()).tan());
+/// camera with fields of view `file_hfov_deg` x `file_vfov_deg`.
+///
+/// The course first fits the file's camera to its 800 x 600 window
+/// (`Camera::configure`): when the file's aspect `tan(h/2) / tan(v/2)` is
+/// wider than the window's, the vertical fov is widened to
+/// `2 atan(tan(h/2) / (800/600))`; when narrower, the horizontal one is (and
+/// the vertical kept). The screen distance `D = 600 / (2 tan(v/2))` pixels
+/// is then kept for any output size.
+pub fn course_fov(file_hfov_deg: f32, file_vfov_deg: f32, width: u32, height: u32) -> (f32, f32) {
+    let window_aspect = COURSE_WINDOW.0 as f32 / COURSE_WINDOW.1 as f32;
+    let tan_h = (0.5 * file_hfov_deg.to_radians()).tan();
+    let tan_v = (0.5 * file_vfov_deg.to_radians()).tan();
+    let fitted_tan_v = if tan_h / tan_v > window_aspect {
+        tan_h / window_aspect
+    } else {
+        tan_v
+    };
+    let screen_distance = COURSE_WINDOW.1 as f32 / (2.0 * fitted_tan_v);
     let fov = |pixels: u32| {
         2.0 * (pixels as f32 / (2.0 * screen_distance))
             .atan()
@@ -161,6 +177,23 @@ mod tests {
         let cam = Camera::course_placement(&cornell_info(), &cornell_bounds(), 800, 600);
         assert!((cam.hfov_deg - 49.13).abs() < 0.02 && (cam.vfov_deg - 37.85).abs() < 0.05);
         assert!(cam.view_direction().distance(-Vec3::Z) < 1e-6);
+    }
+
+    #[test]
+    fn a_wide_file_camera_is_fitted_to_the_course_window() {
+        // CBbunny.dae: xfov 49.13434 with aspect 16:9 frames like the 4:3 boxes.
+        let wide_vfov = 2.0
+            * ((0.5f32 * 49.13434f32.to_radians()).tan() / 1.777778)
+                .atan()
+                .to_degrees();
+        let (h, v) = course_fov(49.13434, wide_vfov, 480, 360);
+        assert!(
+            (h - 30.7).abs() < 0.05 && (v - 23.2).abs() < 0.05,
+            "{h} {v}"
+        );
+        // A narrow camera keeps its vertical fov at 800 x 600.
+        let (h, v) = course_fov(30.0, 40.0, 800, 600);
+        assert!((v - 40.0).abs() < 1e-3 && h > 40.0, "{h} {v}");
     }
 
     #[test]
