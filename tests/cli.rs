@@ -1,0 +1,118 @@
+//! The binaries as a user meets them: errors on bad input name the file and
+//! exit non-zero without a panic; an output file is written whole or not at all.
+
+use std::process::Command;
+
+fn run(binary: &str, args: &[&str]) -> (bool, String, String) {
+    let out = Command::new(binary)
+        .args(args)
+        .output()
+        .expect("binary runs");
+    (
+        out.status.success(),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+const PATHTRACER: &str = env!("CARGO_BIN_EXE_pathtracer");
+const BINARIES: [&str; 3] = [
+    env!("CARGO_BIN_EXE_pathtracer"),
+    env!("CARGO_BIN_EXE_part1-raygen"),
+    env!("CARGO_BIN_EXE_part2-bvh"),
+];
+
+#[test]
+fn bad_scene_files_give_a_clear_error_naming_the_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let truncated = dir.path().join("truncated.dae");
+    std::fs::write(
+        &truncated,
+        "<?xml version=\"1.0\"?><COLLADA><library_geometries>",
+    )
+    .unwrap();
+    let empty = dir.path().join("empty.dae");
+    std::fs::write(&empty, "").unwrap();
+    let missing = dir.path().join("missing.dae");
+    for binary in BINARIES {
+        for file in [&truncated, &empty, &missing] {
+            let (ok, _, stderr) = run(binary, &[file.to_str().unwrap(), "-r", "8", "6"]);
+            assert!(!ok, "{binary} accepted {}", file.display());
+            assert!(stderr.starts_with("error: "), "{stderr}");
+            assert!(stderr.contains(file.to_str().unwrap()), "{stderr}");
+            assert!(!stderr.contains("panicked"), "{stderr}");
+        }
+    }
+}
+
+#[test]
+fn info_prints_the_three_fixed_lines() {
+    let (ok, stdout, _) = run(PATHTRACER, &["--info", "-r", "480", "360"]);
+    assert!(ok);
+    assert!(stdout.lines().any(|l| l == "triangles: 12"), "{stdout}");
+    assert!(stdout.lines().any(|l| l == "spheres: 2"), "{stdout}");
+    let camera = stdout.lines().find(|l| l.starts_with("camera: ")).unwrap();
+    assert_eq!(
+        camera,
+        "camera: position (0.0000, 0.7500, 4.8023) direction (-0.0000, 0.0000, -1.0000) hfov 30.68 vfov 23.25"
+    );
+}
+
+#[test]
+fn default_render_writes_a_png_and_says_where() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = Command::new(PATHTRACER)
+        .args(["-r", "40", "30"])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.contains("wrote cornell-box.png"), "{stdout}");
+    let image = image::open(dir.path().join("cornell-box.png")).unwrap();
+    assert_eq!((image.width(), image.height()), (40, 30));
+}
+
+#[test]
+fn a_failed_write_leaves_no_file_and_keeps_an_old_one() {
+    let dir = tempfile::tempdir().unwrap();
+    // Into a folder that does not exist: an error, and nothing appears.
+    let nowhere = dir.path().join("no-such-folder").join("x.png");
+    let (ok, _, stderr) = run(
+        PATHTRACER,
+        &["-r", "8", "6", "-f", nowhere.to_str().unwrap()],
+    );
+    assert!(!ok && stderr.contains("x.png"), "{stderr}");
+    assert!(!nowhere.exists());
+    // Over a directory of the same name: an error, and the directory stays.
+    let taken = dir.path().join("taken.png");
+    std::fs::create_dir(&taken).unwrap();
+    let (ok, _, _) = run(PATHTRACER, &["-r", "8", "6", "-f", taken.to_str().unwrap()]);
+    assert!(!ok && taken.is_dir());
+    // No temporary file is left behind.
+    let leftovers: Vec<_> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(leftovers.len(), 1, "{leftovers:?}");
+}
+
+#[test]
+fn exr_output_holds_linear_radiance() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("n.exr");
+    let (ok, _, stderr) = run(
+        PATHTRACER,
+        &["-r", "48", "36", "-f", path.to_str().unwrap()],
+    );
+    assert!(ok, "{stderr}");
+    let image = image::open(&path).unwrap().to_rgb32f();
+    // Normal shading: every channel is (n + 1) / 2 in [0, 1], untouched by tone mapping.
+    assert!(image
+        .pixels()
+        .all(|p| p.0.iter().all(|&c| (0.0..=1.0).contains(&c))));
+    assert!(
+        image.pixels().any(|p| p.0[2] > 0.99),
+        "the back wall faces the camera: blue = 1"
+    );
+}
