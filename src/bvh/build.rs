@@ -13,7 +13,7 @@
 
 use glam::Vec3A;
 
-use super::{Bvh, Node, NodeBox};
+use super::{Bvh, Link, Node};
 use crate::intersect::Aabb;
 
 /// Number of bins per axis.
@@ -80,6 +80,56 @@ struct Split {
     bin: usize,
 }
 
+/// A subtree still to be built: its references, box and centroid box, and
+/// where to link it.
+struct Task {
+    start: usize,
+    end: usize,
+    depth: usize,
+    bounds: RefBounds,
+    /// `(node, child)` whose link this subtree fills; `None` for the root.
+    parent: Option<(usize, usize)>,
+}
+
+/// The box of some references and the box of their centroids.
+#[derive(Clone, Copy)]
+struct RefBounds {
+    min: Vec3A,
+    max: Vec3A,
+    cmin: Vec3A,
+    cmax: Vec3A,
+}
+
+impl RefBounds {
+    fn of(refs: &[Ref]) -> Self {
+        let inf = Vec3A::splat(f32::INFINITY);
+        refs.iter().fold(
+            RefBounds {
+                min: inf,
+                max: -inf,
+                cmin: inf,
+                cmax: -inf,
+            },
+            |b, r| {
+                let c = r.centroid();
+                RefBounds {
+                    min: b.min.min(r.min),
+                    max: b.max.max(r.max),
+                    cmin: b.cmin.min(c),
+                    cmax: b.cmax.max(c),
+                }
+            },
+        )
+    }
+
+    fn aabb(&self) -> Aabb {
+        Aabb {
+            min: self.min.into(),
+            max: self.max.into(),
+        }
+    }
+}
+
 /// Builds a BVH over boxes `bounds[id]`; empty boxes are allowed and are
 /// simply stored (they can never be hit).
 pub fn build(bounds: &[Aabb], options: &BuildOptions) -> Bvh {
@@ -94,23 +144,25 @@ pub fn build(bounds: &[Aabb], options: &BuildOptions) -> Bvh {
         })
         .collect();
     let mut ids: Vec<u32> = (0..bounds.len() as u32).collect();
-    let mut nodes = Vec::with_capacity(2 * bounds.len());
-    let mut boxes = Vec::with_capacity(2 * bounds.len());
-    let (min, max) = box_of(&refs);
-    nodes.push(Node { first: 0, count: 0 });
-    boxes.push(NodeBox { min, max });
-
-    // (node index, first ref, end ref, depth)
-    let mut stack = vec![(0usize, 0usize, refs.len(), 1usize)];
-    while let Some((index, start, end, depth)) = stack.pop() {
-        let count = end - start;
-        let slice = &mut refs[start..end];
-        let (cmin, cmax) = centroid_bounds(slice);
-        let can_use_sah = depth < SAH_DEPTH_LIMIT && cmax.cmpgt(cmin).any();
+    let mut nodes: Vec<Node> = Vec::with_capacity(bounds.len());
+    let root_bounds = RefBounds::of(&refs);
+    let mut root = Link::default();
+    let mut stack = vec![Task {
+        start: 0,
+        end: refs.len(),
+        depth: 1,
+        bounds: root_bounds,
+        parent: None,
+    }];
+    while let Some(task) = stack.pop() {
+        let count = task.end - task.start;
+        let slice = &mut refs[task.start..task.end];
+        let RefBounds { cmin, cmax, .. } = task.bounds;
+        let can_use_sah = task.depth < SAH_DEPTH_LIMIT && cmax.cmpgt(cmin).any();
         let decision = if count <= 1 {
             Decision::Leaf
         } else if can_use_sah {
-            let node_area = half_area(boxes[index].min, boxes[index].max);
+            let node_area = half_area(task.bounds.min, task.bounds.max);
             best_sah_split(slice, cmin, cmax, node_area, options)
         } else if count <= options.max_leaf_size {
             Decision::Leaf
@@ -119,27 +171,57 @@ pub fn build(bounds: &[Aabb], options: &BuildOptions) -> Bvh {
         };
         let mid = match decision {
             Decision::Leaf => {
-                nodes[index].first = start as u32;
-                nodes[index].count = count as u32;
+                let leaf = Link {
+                    first: task.start as u32,
+                    count: count as u32,
+                };
+                set_link(&mut nodes, &mut root, task.parent, leaf);
                 continue;
             }
-            Decision::Split(split) => partition(slice, &mut ids[start..end], &split, cmin, cmax),
+            Decision::Split(split) => {
+                partition(slice, &mut ids[task.start..task.end], &split, cmin, cmax)
+            }
             Decision::Median => count / 2,
         };
-        let left = nodes.len();
-        for (s, e) in [(start, start + mid), (start + mid, end)] {
-            let (min, max) = box_of(&refs[s..e]);
-            nodes.push(Node { first: 0, count: 0 });
-            boxes.push(NodeBox { min, max });
+        let split_at = task.start + mid;
+        let halves = [(task.start, split_at), (split_at, task.end)];
+        let child_bounds = halves.map(|(s, e)| RefBounds::of(&refs[s..e]));
+        let index = nodes.len();
+        nodes.push(Node {
+            child_bounds: child_bounds.map(|b| b.aabb()),
+            children: [Link::default(); 2],
+        });
+        set_link(
+            &mut nodes,
+            &mut root,
+            task.parent,
+            Link {
+                first: index as u32,
+                count: 0,
+            },
+        );
+        for child in [1, 0] {
+            stack.push(Task {
+                start: halves[child].0,
+                end: halves[child].1,
+                depth: task.depth + 1,
+                bounds: child_bounds[child],
+                parent: Some((index, child)),
+            });
         }
-        nodes[index].first = left as u32;
-        stack.push((left + 1, start + mid, end, depth + 1));
-        stack.push((left, start, start + mid, depth + 1));
     }
     Bvh {
+        bounds: root_bounds.aabb(),
+        root: Some(root),
         nodes,
-        boxes,
         order: ids,
+    }
+}
+
+fn set_link(nodes: &mut [Node], root: &mut Link, parent: Option<(usize, usize)>, link: Link) {
+    match parent {
+        Some((node, child)) => nodes[node].children[child] = link,
+        None => *root = link,
     }
 }
 
@@ -149,23 +231,6 @@ enum Decision {
     Split(Split),
     /// Halve the primitives by count (no useful SAH split exists).
     Median,
-}
-
-fn box_of(refs: &[Ref]) -> (Vec3A, Vec3A) {
-    refs.iter().fold(
-        (Vec3A::splat(f32::INFINITY), Vec3A::splat(f32::NEG_INFINITY)),
-        |(lo, hi), r| (lo.min(r.min), hi.max(r.max)),
-    )
-}
-
-fn centroid_bounds(refs: &[Ref]) -> (Vec3A, Vec3A) {
-    refs.iter().fold(
-        (Vec3A::splat(f32::INFINITY), Vec3A::splat(f32::NEG_INFINITY)),
-        |(lo, hi), r| {
-            let c = r.centroid();
-            (lo.min(c), hi.max(c))
-        },
-    )
 }
 
 /// Maps a centroid to its bin along each axis.

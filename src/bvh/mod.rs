@@ -29,72 +29,46 @@ pub use accel::BvhAccel;
 pub use build::BuildOptions;
 pub use validate::ValidationError;
 
-use glam::Vec3A;
-
-use crate::math::float::gamma;
-
 use crate::intersect::Aabb;
 
-/// One node of the flattened tree.
-///
-/// Interior: `count == 0`, children at `first` and `first + 1`.
-/// Leaf: primitives at slots `first .. first + count` of [`Bvh::order`].
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Node {
+/// A reference to a subtree: an interior node, or a leaf's range of slots.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Link {
+    /// Interior: index into [`Bvh::nodes`]. Leaf: first slot in [`Bvh::order`].
     pub first: u32,
+    /// Leaf: number of primitives (at least 1). Interior: 0.
     pub count: u32,
 }
 
-impl Node {
+impl Link {
     pub fn is_leaf(&self) -> bool {
         self.count > 0
     }
+
+    /// The leaf's slots (empty for an interior link).
+    pub fn slots(&self) -> std::ops::Range<u32> {
+        self.first..self.first + self.count
+    }
 }
 
-/// A node's box, in SIMD lanes (32 bytes), stored apart from the [`Node`]s
-/// so that the two sibling boxes that traversal tests together share one
-/// 64-byte cache line.
+/// An interior node: the boxes of its two children and the links to them,
+/// 64 bytes, so one cache line holds everything traversal reads at a node.
 #[derive(Clone, Copy, Debug, PartialEq)]
-#[repr(C, align(32))]
-pub struct NodeBox {
-    pub min: Vec3A,
-    pub max: Vec3A,
+#[repr(C, align(64))]
+pub struct Node {
+    pub child_bounds: [Aabb; 2],
+    pub children: [Link; 2],
 }
 
-impl NodeBox {
-    pub fn aabb(&self) -> Aabb {
-        Aabb {
-            min: self.min.into(),
-            max: self.max.into(),
-        }
-    }
-
-    /// The ray's entry distance into the box within `[t_min, t_max]`
-    /// (the slab test of [`Aabb::hit_distance`], four lanes at a time).
-    #[inline(always)]
-    pub fn hit_distance(
-        &self,
-        origin: Vec3A,
-        inv_dir: Vec3A,
-        t_min: f32,
-        t_max: f32,
-    ) -> Option<f32> {
-        let t0 = (self.min - origin) * inv_dir;
-        let t1 = (self.max - origin) * inv_dir;
-        let near = t0.min(t1);
-        let far = t0.max(t1) * (1.0 + 2.0 * gamma(3));
-        let enter = near.max_element().max(t_min);
-        let exit = far.min_element().min(t_max);
-        (enter <= exit).then_some(enter)
-    }
-}
-
-/// A flattened BVH. `nodes[0]` is the root; an empty BVH has no nodes.
-/// `boxes[i]` is the box of `nodes[i]`.
+/// A flattened BVH: the root's box and link, and the interior nodes.
 #[derive(Clone, Debug, Default)]
 pub struct Bvh {
+    /// Box of everything in the tree.
+    pub bounds: Aabb,
+    /// The root: a leaf for a tiny scene, else `nodes[0]`; `None` when empty.
+    pub root: Option<Link>,
+    /// Interior nodes; children of a node come after it.
     pub nodes: Vec<Node>,
-    pub boxes: Vec<NodeBox>,
     /// `order[slot]` is the primitive id stored at leaf slot `slot`.
     pub order: Vec<u32>,
 }
@@ -103,29 +77,26 @@ pub struct Bvh {
 pub const MAX_DEPTH: usize = 64;
 
 impl Bvh {
-    /// Bounds of everything in the tree (empty for an empty tree).
-    pub fn bounds(&self) -> Aabb {
-        self.boxes.first().map_or(Aabb::EMPTY, NodeBox::aabb)
+    /// Every link with its depth (root depth 1), depth first.
+    pub fn links(&self) -> Vec<(Link, usize)> {
+        let mut out = Vec::new();
+        let mut stack: Vec<(Link, usize)> = self.root.iter().map(|&l| (l, 1)).collect();
+        while let Some((link, depth)) = stack.pop() {
+            out.push((link, depth));
+            if !link.is_leaf() {
+                if let Some(node) = self.nodes.get(link.first as usize) {
+                    stack.extend(node.children.iter().map(|&c| (c, depth + 1)));
+                }
+            }
+        }
+        out
     }
 
     /// Number of leaves and the depth of the deepest one (root depth 1).
     pub fn leaf_stats(&self) -> (usize, usize) {
-        let mut leaves = 0;
-        let mut max_depth = 0;
-        let mut stack = Vec::new();
-        if !self.nodes.is_empty() {
-            stack.push((0usize, 1usize));
-        }
-        while let Some((i, depth)) = stack.pop() {
-            let node = &self.nodes[i];
-            if node.is_leaf() {
-                leaves += 1;
-                max_depth = max_depth.max(depth);
-            } else {
-                stack.push((node.first as usize, depth + 1));
-                stack.push((node.first as usize + 1, depth + 1));
-            }
-        }
-        (leaves, max_depth)
+        self.links()
+            .iter()
+            .filter(|(l, _)| l.is_leaf())
+            .fold((0, 0), |(n, d), &(_, depth)| (n + 1, d.max(depth)))
     }
 }

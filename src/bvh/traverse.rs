@@ -1,17 +1,18 @@
 //! BVH traversal: closest hit and any hit.
 //!
 //! Closest hit visits the tree front to back: at an interior node both
-//! child boxes are tested, the nearer child is visited next and the farther
-//! one is pushed with its entry distance. A popped node whose entry
-//! distance is beyond the closest hit found so far is skipped, and every
-//! box test is clipped to that distance, so far subtrees are culled.
+//! child boxes (stored in the node, one cache line) are tested; the nearer
+//! child is visited next and the farther one is pushed with its entry
+//! distance. A popped subtree whose entry distance is beyond the closest
+//! hit found so far is skipped, and every box test is clipped to that
+//! distance, so far subtrees are culled.
 //!
 //! Any hit (shadow rays) needs no order: it returns at the first primitive
 //! hit in the ray's interval.
 
 use glam::{Vec3, Vec3A};
 
-use super::{Bvh, MAX_DEPTH};
+use super::{Bvh, Link, MAX_DEPTH};
 use crate::intersect::Ray;
 
 /// `1 / d` per component, infinite where `d` is zero.
@@ -30,53 +31,48 @@ impl Bvh {
         ray: &Ray,
         mut test: impl FnMut(u32, f32) -> Option<f32>,
     ) -> Option<f32> {
-        let root = self.boxes.first()?;
         let inv = inverse_direction(ray.dir);
         let origin = Vec3A::from(ray.origin);
         let mut t_max = ray.t_max;
-        root.hit_distance(origin, inv, ray.t_min, t_max)?;
+        let mut link = self.root?;
+        self.bounds.hit_distance(origin, inv, ray.t_min, t_max)?;
         let mut best = None;
-        let mut stack = [(0u32, 0.0f32); MAX_DEPTH];
+        let mut stack = [(Link::default(), 0.0f32); MAX_DEPTH];
         let mut depth = 0;
-        let mut index = 0usize;
         loop {
-            let node = &self.nodes[index];
-            if node.is_leaf() {
-                for slot in node.first..node.first + node.count {
+            if link.is_leaf() {
+                for slot in link.slots() {
                     if let Some(t) = test(slot, t_max) {
                         t_max = t;
                         best = Some(t);
                     }
                 }
             } else {
-                let left = node.first as usize;
-                let (a, b) = (&self.boxes[left], &self.boxes[left + 1]);
+                let node = &self.nodes[link.first as usize];
+                let [a, b] = &node.child_bounds;
                 let da = a.hit_distance(origin, inv, ray.t_min, t_max);
                 let db = b.hit_distance(origin, inv, ray.t_min, t_max);
+                let [la, lb] = node.children;
                 match (da, db) {
                     (Some(da), Some(db)) => {
-                        let (near, far, far_t) = if da <= db {
-                            (left, left + 1, db)
-                        } else {
-                            (left + 1, left, da)
-                        };
-                        stack[depth] = (far as u32, far_t);
+                        let (near, far, far_t) = if da <= db { (la, lb, db) } else { (lb, la, da) };
+                        stack[depth] = (far, far_t);
                         depth += 1;
-                        index = near;
+                        link = near;
                         continue;
                     }
                     (Some(_), None) => {
-                        index = left;
+                        link = la;
                         continue;
                     }
                     (None, Some(_)) => {
-                        index = left + 1;
+                        link = lb;
                         continue;
                     }
                     (None, None) => {}
                 }
             }
-            // Pop the next node that may still hold a closer hit.
+            // Pop the next subtree that may still hold a closer hit.
             loop {
                 if depth == 0 {
                     return best;
@@ -84,7 +80,7 @@ impl Bvh {
                 depth -= 1;
                 let (next, entry) = stack[depth];
                 if entry <= t_max {
-                    index = next as usize;
+                    link = next;
                     break;
                 }
             }
@@ -95,31 +91,35 @@ impl Bvh {
     /// whose leaf box the ray meets within `[ray.t_min, ray.t_max]`.
     #[inline]
     pub fn any_hit(&self, ray: &Ray, mut test: impl FnMut(u32) -> bool) -> bool {
-        if self.nodes.is_empty() {
+        let Some(root) = self.root else {
             return false;
-        }
+        };
         let inv = inverse_direction(ray.dir);
         let origin = Vec3A::from(ray.origin);
-        let mut stack = [0u32; MAX_DEPTH];
+        let meets = |b: &crate::intersect::Aabb| {
+            b.hit_distance(origin, inv, ray.t_min, ray.t_max).is_some()
+        };
+        if !meets(&self.bounds) {
+            return false;
+        }
+        let mut stack = [Link::default(); MAX_DEPTH];
+        stack[0] = root;
         let mut depth = 1;
         while depth > 0 {
             depth -= 1;
-            let index = stack[depth] as usize;
-            if self.boxes[index]
-                .hit_distance(origin, inv, ray.t_min, ray.t_max)
-                .is_none()
-            {
-                continue;
-            }
-            let node = &self.nodes[index];
-            if node.is_leaf() {
-                if (node.first..node.first + node.count).any(&mut test) {
+            let link = stack[depth];
+            if link.is_leaf() {
+                if link.slots().any(&mut test) {
                     return true;
                 }
-            } else {
-                stack[depth] = node.first;
-                stack[depth + 1] = node.first + 1;
-                depth += 2;
+                continue;
+            }
+            let node = &self.nodes[link.first as usize];
+            for (bounds, &child) in node.child_bounds.iter().zip(&node.children) {
+                if meets(bounds) {
+                    stack[depth] = child;
+                    depth += 1;
+                }
             }
         }
         false

@@ -2,8 +2,8 @@
 //!
 //! A valid BVH: every child box lies inside its parent's box; every leaf
 //! box holds the boxes of its primitives; every leaf slot is reached from
-//! the root exactly once; `order` is a permutation of the primitive ids;
-//! and no path is deeper than [`super::MAX_DEPTH`].
+//! the root exactly once and every node once; `order` is a permutation of
+//! the primitive ids; and no path is deeper than [`super::MAX_DEPTH`].
 
 use std::fmt;
 
@@ -41,59 +41,56 @@ impl Bvh {
                 None => return fail(format!("primitive id {id} out of range")),
             }
         }
-        if self.boxes.len() != self.nodes.len() {
-            return fail(format!(
-                "{} boxes for {} nodes",
-                self.boxes.len(),
-                self.nodes.len()
-            ));
-        }
-        if self.nodes.is_empty() {
-            return if bounds.is_empty() {
+        let Some(root) = self.root else {
+            return if bounds.is_empty() && self.nodes.is_empty() {
                 Ok(())
             } else {
-                fail("no nodes but primitives".into())
+                fail("no root but primitives or nodes".into())
             };
-        }
+        };
         let mut slot_reached = vec![false; self.order.len()];
         let mut node_reached = vec![false; self.nodes.len()];
-        let mut stack = vec![(0usize, 1usize)];
-        while let Some((index, depth)) = stack.pop() {
+        // (link, its box, depth)
+        let mut stack = vec![(root, self.bounds, 1usize)];
+        while let Some((link, link_box, depth)) = stack.pop() {
             if depth > MAX_DEPTH {
-                return fail(format!("node {index} at depth {depth} > {MAX_DEPTH}"));
+                return fail(format!("depth {depth} > {MAX_DEPTH}"));
             }
+            if link.is_leaf() {
+                let end = link.first as usize + link.count as usize;
+                if end > self.order.len() {
+                    return fail(format!("leaf slots {}..{end} out of range", link.first));
+                }
+                for slot in link.slots() {
+                    if std::mem::replace(&mut slot_reached[slot as usize], true) {
+                        return fail(format!("slot {slot} in two leaves"));
+                    }
+                    let b = bounds[self.order[slot as usize] as usize];
+                    if !link_box.contains(&b) {
+                        return fail(format!(
+                            "leaf box {link_box:?} does not hold primitive box {b:?}"
+                        ));
+                    }
+                }
+                continue;
+            }
+            let index = link.first as usize;
+            let Some(node) = self.nodes.get(index) else {
+                return fail(format!("link to node {index} out of range"));
+            };
             if std::mem::replace(&mut node_reached[index], true) {
                 return fail(format!("node {index} reached twice"));
             }
-            let node = &self.nodes[index];
-            let first = node.first as usize;
-            if node.is_leaf() {
-                let end = first + node.count as usize;
-                if end > self.order.len() {
-                    return fail(format!("leaf {index} slots {first}..{end} out of range"));
+            for (child_box, &child) in node.child_bounds.iter().zip(&node.children) {
+                if !link_box.contains(child_box) {
+                    return fail(format!(
+                        "a child box of node {index} sticks out of its parent"
+                    ));
                 }
-                for slot in first..end {
-                    if std::mem::replace(&mut slot_reached[slot], true) {
-                        return fail(format!("slot {slot} in two leaves"));
-                    }
-                    let b = bounds[self.order[slot] as usize];
-                    if !self.boxes[index].aabb().contains(&b) {
-                        return fail(format!("leaf {index} does not hold primitive box {b:?}"));
-                    }
+                if !child.is_leaf() && child.first as usize <= index {
+                    return fail(format!("node {index} points back to {}", child.first));
                 }
-            } else {
-                for child in [first, first + 1] {
-                    let Some(c) = self.boxes.get(child) else {
-                        return fail(format!("node {index} has child {child} out of range"));
-                    };
-                    if child <= index {
-                        return fail(format!("node {index} points back to {child}"));
-                    }
-                    if !self.boxes[index].aabb().contains(&c.aabb()) {
-                        return fail(format!("child {child} sticks out of parent {index}"));
-                    }
-                    stack.push((child, depth + 1));
-                }
+                stack.push((child, *child_box, depth + 1));
             }
         }
         if let Some(slot) = slot_reached.iter().position(|r| !r) {
@@ -103,5 +100,51 @@ impl Bvh {
             return fail(format!("node {node} is unreachable"));
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bvh::build::{build, BuildOptions};
+    use glam::Vec3;
+
+    fn boxes(n: usize) -> Vec<Aabb> {
+        (0..n)
+            .map(|i| {
+                let p = Vec3::new((i * 7 % 13) as f32, (i * 5 % 11) as f32, i as f32 * 0.1);
+                Aabb::from_points([p, p + Vec3::splat(0.5)])
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_fresh_build_is_valid() {
+        for n in [0, 1, 2, 9, 100] {
+            let b = boxes(n);
+            build(&b, &BuildOptions::default()).validate(&b).unwrap();
+        }
+    }
+
+    #[test]
+    fn each_broken_invariant_is_caught() {
+        let b = boxes(100);
+        let good = build(&b, &BuildOptions::default());
+        let mut shrunk = good.clone();
+        shrunk.nodes[0].child_bounds[0].max -= Vec3::splat(1.0);
+        let mut duplicated = good.clone();
+        duplicated.order[1] = duplicated.order[0];
+        let mut cut = good.clone();
+        cut.nodes[0].children[1] = cut.nodes[0].children[0];
+        let mut looped = good.clone();
+        let first_interior = looped.nodes[0]
+            .children
+            .iter()
+            .position(|c| !c.is_leaf())
+            .unwrap();
+        looped.nodes[0].children[first_interior].first = 0;
+        for broken in [shrunk, duplicated, cut, looped] {
+            assert!(broken.validate(&b).is_err());
+        }
     }
 }
