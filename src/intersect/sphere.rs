@@ -31,7 +31,8 @@ impl SphereShape {
         let r2 = self.radius * self.radius;
         let perp = f - b * ray.dir;
         let disc = r2 - perp.length_squared();
-        if !(disc >= 0.0) {
+        // Also rejects a NaN discriminant (non-finite input).
+        if disc.is_nan() || disc < 0.0 {
             return None;
         }
         let c = f.length_squared() - r2;
