@@ -8,6 +8,7 @@
 use std::f32::consts::PI;
 
 use glam::{DVec3, Vec3};
+use pathtracer::bvh::BvhAccel;
 use pathtracer::intersect::{Aabb, Hit, Intersector, LinearScan, Primitives, Ray};
 use pathtracer::math::float::gamma;
 use pathtracer::math::rng::Sampler;
@@ -178,4 +179,18 @@ pub fn cases(cases: u32) -> ProptestConfig {
         max_global_rejects: 1_000_000,
         ..ProptestConfig::default()
     }
+}
+
+/// Traces `ray` with a linear scan and a BVH over `primitives`: nothing
+/// panics, no hit has a NaN, and the two agree on whether anything is hit.
+/// Returns the linear scan's hit.
+pub fn trace_both(primitives: &Primitives, bvh: &BvhAccel, ray: &Ray) -> Option<Hit> {
+    let linear = LinearScan::new(primitives);
+    let hit = linear.intersect(ray);
+    let bvh_hit = bvh.intersect(ray);
+    for h in hit.iter().chain(bvh_hit.iter()) {
+        assert_no_nan(h);
+    }
+    let _ = (linear.occluded(ray), bvh.occluded(ray));
+    hit
 }
