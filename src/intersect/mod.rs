@@ -1,7 +1,7 @@
 //! Part 1: rays and their intersections with triangles and spheres.
 //!
 //! - [`Ray`]: `r(t) = o + t d`, `t` in `[t_min, t_max]`, `d` unit length.
-//! - [`triangle`]: Möller-Trumbore, returning `t` and barycentrics.
+//! - [`triangle`]: the watertight test of Woop et al., returning `t` and barycentrics.
 //! - [`sphere`]: the analytic quadratic in a cancellation-free form.
 //! - [`Hit`]: the point, the interpolated shading normal, the geometric
 //!   normal and a bound on the point's rounding error, so that

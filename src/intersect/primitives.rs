@@ -49,7 +49,7 @@ impl Shape {
     /// The shape's bounding box.
     pub fn bounds(&self) -> Aabb {
         match self {
-            Shape::Triangle(t) => Aabb::from_points([t.p0, t.p0 + t.e1, t.p0 + t.e2]),
+            Shape::Triangle(t) => Aabb::from_points([t.p0, t.p1, t.p2]),
             Shape::Sphere(s) => Aabb {
                 min: s.center - Vec3::splat(s.radius),
                 max: s.center + Vec3::splat(s.radius),

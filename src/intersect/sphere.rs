@@ -41,9 +41,12 @@ impl SphereShape {
         if t0 > t1 {
             std::mem::swap(&mut t0, &mut t1);
         }
+        // Only finite roots: with huge coordinates a root can overflow to
+        // +-inf, which an interval with an infinite end would accept, and
+        // the hit point o + t d would then be NaN.
         [t0, t1]
             .into_iter()
-            .find(|t| *t >= ray.t_min && *t <= t_max)
+            .find(|t| t.is_finite() && *t >= ray.t_min && *t <= t_max)
     }
 }
 
