@@ -289,7 +289,7 @@ fn best_sah_split(
                 continue;
             }
             let cost = half_area(acc.min, acc.max) * acc.count as f32 + right_cost[i];
-            if best.as_ref().map_or(true, |(c, _)| cost < *c) {
+            if best.as_ref().is_none_or(|(c, _)| cost < *c) {
                 best = Some((cost, Split { axis, bin: i }));
             }
         }

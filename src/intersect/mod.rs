@@ -1,7 +1,9 @@
 //! Part 1: rays and their intersections with triangles and spheres.
 //!
 //! - [`Ray`]: `r(t) = o + t d`, `t` in `[t_min, t_max]`, `d` unit length.
-//! - [`triangle`]: the watertight test of Woop et al., returning `t` and barycentrics.
+//! - [`moller_trumbore`]: the course's ray-triangle test, and [`triangle`]:
+//!   the watertight test of Woop et al. that the renderer uses; both return
+//!   `t` and barycentrics.
 //! - [`sphere`]: the analytic quadratic in a cancellation-free form.
 //! - [`Hit`]: the point, the interpolated shading normal, the geometric
 //!   normal and a bound on the point's rounding error, so that
@@ -12,6 +14,7 @@
 pub mod aabb;
 pub mod hit;
 pub mod linear;
+pub mod moller_trumbore;
 pub mod primitives;
 pub mod ray;
 pub mod sphere;

@@ -1,0 +1,80 @@
+//! The course's Möller-Trumbore test against the watertight test the
+//! renderer uses: they agree away from edges, and only Möller-Trumbore lets
+//! rays slip through a shared vertex of a closed mesh.
+
+mod common;
+
+use common::*;
+use glam::Vec3;
+use pathtracer::intersect::moller_trumbore::moller_trumbore;
+use pathtracer::intersect::triangle::TriangleShape;
+use pathtracer::intersect::Ray;
+use pathtracer::math::rng::sampler;
+use proptest::prelude::*;
+
+proptest! {
+    #![proptest_config(cases(1000))]
+
+    /// Away from the edges both tests find the same hit.
+    #[test]
+    fn agrees_with_the_watertight_test_inside_the_triangle(
+        tri in triangle(10.0),
+        (u, v) in interior_barycentrics(0.05),
+        origin in point(30.0),
+    ) {
+        prop_assume!(well_shaped(&tri, 0.05));
+        let aim = at_barycentric(&tri, u, v);
+        prop_assume!((aim - origin).length() > 0.1);
+        let ray = Ray::new(origin, (aim - origin).normalize());
+        let shape = TriangleShape::new(tri[0], tri[1], tri[2]);
+        let mt = moller_trumbore(&shape, &ray, f32::INFINITY);
+        let wt = shape.intersect(&ray, f32::INFINITY);
+        let (Some(mt), Some(wt)) = (mt, wt) else {
+            // Only a ray grazing the plane may be refused (by the watertight
+            // test's t-error check).
+            let cos = ray.dir.dot((tri[1] - tri[0]).cross(tri[2] - tri[0]).normalize());
+            prop_assert!(cos.abs() < 1e-3, "missed: {mt:?} {wt:?}");
+            return Ok(());
+        };
+        prop_assert!((mt.t - wt.t).abs() <= 1e-4 * wt.t.max(1.0), "{mt:?} {wt:?}");
+        prop_assert!((mt.u - wt.u).abs() < 1e-3 && (mt.v - wt.v).abs() < 1e-3, "{mt:?} {wt:?}");
+    }
+}
+
+/// Six small triangles around a shared centre vertex, seen from afar: rays
+/// aimed exactly at the centre always hit with the watertight test, and
+/// Möller-Trumbore loses some of them between the triangles.
+#[test]
+fn moller_trumbore_leaks_at_a_shared_vertex_and_the_watertight_test_does_not() {
+    let mut rng = sampler(2013, 0);
+    let (mut mt_misses, mut wt_misses, rays) = (0, 0, 4000);
+    for _ in 0..rays {
+        let centre = random_point(&mut rng, -10.0, 10.0);
+        let normal = random_unit(&mut rng);
+        let frame = pathtracer::math::Frame::from_z(normal);
+        let ring: Vec<Vec3> = (0..6)
+            .map(|i| {
+                let a = i as f32 / 6.0 * std::f32::consts::TAU;
+                centre + 0.01 * frame.to_world(Vec3::new(a.cos(), a.sin(), 0.0))
+            })
+            .collect();
+        let fan: Vec<TriangleShape> = (0..6)
+            .map(|i| TriangleShape::new(centre, ring[i], ring[(i + 1) % 6]))
+            .collect();
+        // From 40 units away, on the side the normal faces, not grazing.
+        let mut from = random_unit(&mut rng);
+        if from.dot(normal) < 0.3 {
+            from = (from + normal).normalize();
+        }
+        let ray = Ray::new(centre + 40.0 * from, -from);
+        mt_misses +=
+            fan.iter()
+                .all(|t| moller_trumbore(t, &ray, f32::INFINITY).is_none()) as usize;
+        wt_misses += fan
+            .iter()
+            .all(|t| t.intersect(&ray, f32::INFINITY).is_none()) as usize;
+    }
+    eprintln!("of {rays} rays at the shared vertex, Möller-Trumbore lost {mt_misses}, the watertight test {wt_misses}");
+    assert_eq!(wt_misses, 0);
+    assert!(mt_misses > 0, "expected Möller-Trumbore to leak somewhere");
+}
