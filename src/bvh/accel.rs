@@ -54,8 +54,9 @@ impl Intersector for BvhAccel {
             Some(hit.t)
         });
         best.map(|(slot, hit)| {
+            let shape = &self.shapes[slot as usize];
             self.primitives
-                .finish_hit(self.bvh.order[slot as usize], ray, hit)
+                .finish_hit(self.bvh.order[slot as usize], shape, ray, hit)
         })
     }
 

@@ -29,7 +29,10 @@ pub use accel::BvhAccel;
 pub use build::BuildOptions;
 pub use validate::ValidationError;
 
+use glam::{Vec3, Vec4, Vec4Swizzles};
+
 use crate::intersect::Aabb;
+use crate::math::float::gamma;
 
 /// A reference to a subtree: an interior node, or a leaf's range of slots.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -53,11 +56,83 @@ impl Link {
 
 /// An interior node: the boxes of its two children and the links to them,
 /// 64 bytes, so one cache line holds everything traversal reads at a node.
+///
+/// The boxes are stored by axis, one SIMD register each, so one ray is
+/// tested against both children at once ([`Node::hit_children`]):
+/// lanes `(child 0 min, child 1 min, child 0 max, child 1 max)`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[repr(C, align(64))]
 pub struct Node {
-    pub child_bounds: [Aabb; 2],
+    pub x: Vec4,
+    pub y: Vec4,
+    pub z: Vec4,
     pub children: [Link; 2],
+}
+
+/// A ray prepared for box tests: origin and inverse direction, each
+/// component splatted across four lanes.
+#[derive(Clone, Copy, Debug)]
+pub struct RayLanes {
+    origin: [Vec4; 3],
+    inv_dir: [Vec4; 3],
+}
+
+impl RayLanes {
+    /// `inv_dir` is `1 / d` per component (infinite for a zero component).
+    pub fn new(origin: Vec3, inv_dir: Vec3) -> Self {
+        RayLanes {
+            origin: [origin.x, origin.y, origin.z].map(Vec4::splat),
+            inv_dir: [inv_dir.x, inv_dir.y, inv_dir.z].map(Vec4::splat),
+        }
+    }
+}
+
+impl Node {
+    pub fn new(child_bounds: [Aabb; 2], children: [Link; 2]) -> Self {
+        let [a, b] = child_bounds;
+        let lanes = |axis: usize| Vec4::new(a.min[axis], b.min[axis], a.max[axis], b.max[axis]);
+        Node {
+            x: lanes(0),
+            y: lanes(1),
+            z: lanes(2),
+            children,
+        }
+    }
+
+    /// The box of child `i` (0 or 1).
+    pub fn child_bounds(&self, i: usize) -> Aabb {
+        let [x, y, z] = [self.x, self.y, self.z].map(|v| v.to_array());
+        Aabb {
+            min: Vec3::new(x[i], y[i], z[i]),
+            max: Vec3::new(x[i + 2], y[i + 2], z[i + 2]),
+        }
+    }
+
+    /// The slab test ([`Aabb::hit_distance`]) of both children at once:
+    /// the entry distance into each child's box, or `None` for a miss.
+    ///
+    /// Per axis, `(planes - o) / d` gives the distances to all four
+    /// planes; swapping the halves (`zwxy`) pairs each child's min plane
+    /// with its max plane, so lanes 0 and 1 of their minimum are the near
+    /// distances and of their maximum the far ones. A NaN lane (`0 * inf`,
+    /// a ray lying in a slab's plane) is always the first operand of
+    /// `max`/`min`, which then return the second: that axis is ignored.
+    #[inline(always)]
+    pub fn hit_children(&self, ray: &RayLanes, t_min: f32, t_max: f32) -> [Option<f32>; 2] {
+        let mut near = Vec4::splat(t_min);
+        let mut far = Vec4::splat(t_max);
+        for (axis, planes) in [self.x, self.y, self.z].into_iter().enumerate() {
+            let t = (planes - ray.origin[axis]) * ray.inv_dir[axis];
+            let swapped = t.zwxy();
+            near = t.min(swapped).max(near);
+            far = (t.max(swapped) * (1.0 + 2.0 * gamma(3))).min(far);
+        }
+        let hit = near.cmple(far).bitmask();
+        [
+            (hit & 1 != 0).then_some(near.x),
+            (hit & 2 != 0).then_some(near.y),
+        ]
+    }
 }
 
 /// A flattened BVH: the root's box and link, and the interior nodes.

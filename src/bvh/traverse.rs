@@ -10,15 +10,15 @@
 //! Any hit (shadow rays) needs no order: it returns at the first primitive
 //! hit in the ray's interval.
 
-use glam::{Vec3, Vec3A};
+use glam::Vec3;
 
-use super::{Bvh, Link, MAX_DEPTH};
+use super::{Bvh, Link, RayLanes, MAX_DEPTH};
 use crate::intersect::Ray;
 
 /// `1 / d` per component, infinite where `d` is zero.
 #[inline(always)]
-fn inverse_direction(dir: Vec3) -> Vec3A {
-    Vec3A::ONE / Vec3A::from(dir)
+fn inverse_direction(dir: Vec3) -> Vec3 {
+    Vec3::ONE / dir
 }
 
 impl Bvh {
@@ -32,10 +32,11 @@ impl Bvh {
         mut test: impl FnMut(u32, f32) -> Option<f32>,
     ) -> Option<f32> {
         let inv = inverse_direction(ray.dir);
-        let origin = Vec3A::from(ray.origin);
         let mut t_max = ray.t_max;
         let mut link = self.root?;
-        self.bounds.hit_distance(origin, inv, ray.t_min, t_max)?;
+        self.bounds
+            .hit_distance(ray.origin.into(), inv.into(), ray.t_min, t_max)?;
+        let lanes = RayLanes::new(ray.origin, inv);
         let mut best = None;
         let mut stack = [(Link::default(), 0.0f32); MAX_DEPTH];
         let mut depth = 0;
@@ -49,9 +50,7 @@ impl Bvh {
                 }
             } else {
                 let node = &self.nodes[link.first as usize];
-                let [a, b] = &node.child_bounds;
-                let da = a.hit_distance(origin, inv, ray.t_min, t_max);
-                let db = b.hit_distance(origin, inv, ray.t_min, t_max);
+                let [da, db] = node.hit_children(&lanes, ray.t_min, t_max);
                 let [la, lb] = node.children;
                 match (da, db) {
                     (Some(da), Some(db)) => {
@@ -95,13 +94,13 @@ impl Bvh {
             return false;
         };
         let inv = inverse_direction(ray.dir);
-        let origin = Vec3A::from(ray.origin);
-        let meets = |b: &crate::intersect::Aabb| {
-            b.hit_distance(origin, inv, ray.t_min, ray.t_max).is_some()
-        };
-        if !meets(&self.bounds) {
+        let inside = self
+            .bounds
+            .hit_distance(ray.origin.into(), inv.into(), ray.t_min, ray.t_max);
+        if inside.is_none() {
             return false;
         }
+        let lanes = RayLanes::new(ray.origin, inv);
         let mut stack = [Link::default(); MAX_DEPTH];
         stack[0] = root;
         let mut depth = 1;
@@ -115,8 +114,9 @@ impl Bvh {
                 continue;
             }
             let node = &self.nodes[link.first as usize];
-            for (bounds, &child) in node.child_bounds.iter().zip(&node.children) {
-                if meets(bounds) {
+            let hits = node.hit_children(&lanes, ray.t_min, ray.t_max);
+            for (hit, &child) in hits.iter().zip(&node.children) {
+                if hit.is_some() {
                     stack[depth] = child;
                     depth += 1;
                 }

@@ -24,7 +24,10 @@ impl Intersector for LinearScan<'_> {
                 best = Some((id as u32, hit));
             }
         }
-        best.map(|(id, hit)| self.primitives.finish_hit(id, ray, hit))
+        best.map(|(id, hit)| {
+            let shape = &self.primitives.shapes[id as usize];
+            self.primitives.finish_hit(id, shape, ray, hit)
+        })
     }
 
     fn occluded(&self, ray: &Ray) -> bool {

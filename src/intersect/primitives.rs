@@ -58,15 +58,22 @@ impl Shape {
     }
 }
 
+/// What shading needs of a triangle beyond its shape, in one record so a
+/// hit costs one memory access for it: the three vertex normals and the
+/// material.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct TriangleShading {
+    normals: [Vec3; 3],
+    material: MaterialId,
+}
+
 /// The scene's shapes plus what it takes to finish a hit record.
 #[derive(Clone, Debug, Default)]
 pub struct Primitives {
     /// One shape per primitive id.
     pub shapes: Vec<Shape>,
-    positions: Vec<Vec3>,
-    normals: Vec<Vec3>,
-    triangles: Vec<[u32; 3]>,
-    triangle_materials: Vec<MaterialId>,
+    /// Per triangle id.
+    triangle_shading: Vec<TriangleShading>,
     spheres: Vec<Sphere>,
 }
 
@@ -87,12 +94,18 @@ impl Primitives {
                 radius: s.radius,
             })
         });
+        let triangle_shading = mesh
+            .triangles
+            .iter()
+            .zip(&mesh.materials)
+            .map(|(corners, &material)| TriangleShading {
+                normals: corners.map(|v| mesh.normals[v as usize]),
+                material,
+            })
+            .collect();
         Primitives {
             shapes: triangles.chain(spheres).collect(),
-            positions: mesh.positions.clone(),
-            normals: mesh.normals.clone(),
-            triangles: mesh.triangles.clone(),
-            triangle_materials: mesh.materials.clone(),
+            triangle_shading,
             spheres: scene.spheres.clone(),
         }
     }
@@ -112,30 +125,30 @@ impl Primitives {
             .fold(Aabb::EMPTY, |b, s| b.union(s.bounds()))
     }
 
-    /// The full hit record for primitive `id` hit by `ray` at `hit`.
-    pub fn finish_hit(&self, id: u32, ray: &Ray, hit: ShapeHit) -> Hit {
+    /// The full hit record for primitive `id`, whose shape is `shape`, hit
+    /// by `ray` at `hit`.
+    pub fn finish_hit(&self, id: u32, shape: &Shape, ray: &Ray, hit: ShapeHit) -> Hit {
         let index = id as usize;
-        if let Some(&[a, b, c]) = self.triangles.get(index) {
-            let (a, b, c) = (a as usize, b as usize, c as usize);
-            let (p0, p1, p2) = (self.positions[a], self.positions[b], self.positions[c]);
+        if let Shape::Triangle(TriangleShape { p0, p1, p2 }) = *shape {
+            let shading = &self.triangle_shading[index];
             let w = 1.0 - hit.u - hit.v;
             // Point from barycentrics; error bound from pbrt-v4 eq. 6.49.
             let p = w * p0 + hit.u * p1 + hit.v * p2;
             let p_error = gamma(7) * ((w * p0).abs() + (hit.u * p1).abs() + (hit.v * p2).abs());
             let ng = (p1 - p0).cross(p2 - p0).normalize_or(-ray.dir);
-            let n = (w * self.normals[a] + hit.u * self.normals[b] + hit.v * self.normals[c])
-                .normalize_or(ng);
+            let [n0, n1, n2] = shading.normals;
+            let n = (w * n0 + hit.u * n1 + hit.v * n2).normalize_or(ng);
             Hit {
                 t: hit.t,
                 p,
                 p_error,
                 n,
                 ng,
-                material: self.triangle_materials[index],
+                material: shading.material,
                 primitive: id,
             }
         } else {
-            let sphere = &self.spheres[index - self.triangles.len()];
+            let sphere = &self.spheres[index - self.triangle_shading.len()];
             let p = reproject(sphere.center, sphere.radius, ray.at(hit.t));
             let local = p - sphere.center;
             let p_error = gamma(5) * local.abs() + gamma(1) * p.abs();
