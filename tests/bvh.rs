@@ -230,3 +230,43 @@ fn course_scenes_match_linear_scan() {
         println!("{}: {} primitives agree", path.display(), prims.len());
     }
 }
+
+/// Rays that do not move along an axis (direction component exactly ±0)
+/// and run exactly along box planes: the slab test meets 0 · inf = NaN
+/// there, and the BVH must still find what the linear scan finds.
+#[test]
+fn axis_parallel_rays_along_box_planes_agree_with_the_linear_scan() {
+    // A floor of 8 x 8 unit squares in z = 0, two triangles each.
+    let mut triangles = Vec::new();
+    for i in 0..8 {
+        for j in 0..8 {
+            let (x, y) = (i as f32, j as f32);
+            let c = |dx: f32, dy: f32| Vec3::new(x + dx, y + dy, 0.0);
+            triangles.push([c(0.0, 0.0), c(1.0, 0.0), c(1.0, 1.0)]);
+            triangles.push([c(0.0, 0.0), c(1.0, 1.0), c(0.0, 1.0)]);
+        }
+    }
+    let primitives = soup(&triangles, &[]);
+    let bvh = BvhAccel::new(primitives.clone());
+    bvh.validate().unwrap();
+    let mut checked = 0;
+    for i in 0..=16 {
+        for j in 0..=16 {
+            let (x, y) = (i as f32 * 0.5, j as f32 * 0.5);
+            for dir in [Vec3::new(0.0, 0.0, -1.0), Vec3::new(-0.0, -0.0, -1.0)] {
+                let ray = Ray::new(Vec3::new(x, y, 5.0), dir);
+                assert!(
+                    bvh.intersect(&ray).is_some(),
+                    "the BVH missed the floor at ({x}, {y})"
+                );
+                assert_same_closest(&primitives, &bvh, &ray);
+                assert_occlusion_agrees(&primitives, &bvh, &ray);
+                checked += 1;
+            }
+            // Above the floor, along a row of box planes.
+            let along = Ray::new(Vec3::new(-1.0, y, 0.5), Vec3::new(1.0, 0.0, 0.0));
+            assert_same_closest(&primitives, &bvh, &along);
+        }
+    }
+    assert_eq!(checked, 17 * 17 * 2);
+}

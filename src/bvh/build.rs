@@ -187,7 +187,10 @@ pub fn build(bounds: &[Aabb], options: &BuildOptions) -> Bvh {
         let halves = [(task.start, split_at), (split_at, task.end)];
         let child_bounds = halves.map(|(s, e)| RefBounds::of(&refs[s..e]));
         let index = nodes.len();
-        nodes.push(Node::new(child_bounds.map(|b| b.aabb()), [Link::default(); 2]));
+        nodes.push(Node::new(
+            child_bounds.map(|b| b.aabb()),
+            [Link::default(); 2],
+        ));
         set_link(
             &mut nodes,
             &mut root,

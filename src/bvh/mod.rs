@@ -75,6 +75,9 @@ pub struct Node {
 pub struct RayLanes {
     origin: [Vec4; 3],
     inv_dir: [Vec4; 3],
+    /// Whether some direction component is zero: only then can a plane
+    /// distance be NaN.
+    has_zero_direction: bool,
 }
 
 impl RayLanes {
@@ -83,6 +86,7 @@ impl RayLanes {
         RayLanes {
             origin: [origin.x, origin.y, origin.z].map(Vec4::splat),
             inv_dir: [inv_dir.x, inv_dir.y, inv_dir.z].map(Vec4::splat),
+            has_zero_direction: !inv_dir.is_finite(),
         }
     }
 }
@@ -114,15 +118,26 @@ impl Node {
     /// Per axis, `(planes - o) / d` gives the distances to all four
     /// planes; swapping the halves (`zwxy`) pairs each child's min plane
     /// with its max plane, so lanes 0 and 1 of their minimum are the near
-    /// distances and of their maximum the far ones. A NaN lane (`0 * inf`,
-    /// a ray lying in a slab's plane) is always the first operand of
-    /// `max`/`min`, which then return the second: that axis is ignored.
+    /// distances and of their maximum the far ones.
+    ///
+    /// A ray that does not move along an axis (`d = ±0`, `1/d = ±inf`) and
+    /// starts exactly on one of the box's planes gets `0 · inf = NaN` for
+    /// that plane. It lies inside the slab, so the NaN becomes the infinity
+    /// opposite to the other plane's distance, making the slab `(-inf, inf)`.
+    /// (If both planes are NaN, the box is flat and the ray lies in it: the
+    /// NaN lanes are the first operands of `max`/`min`, which then return
+    /// the second, so that axis is ignored.)
     #[inline(always)]
     pub fn hit_children(&self, ray: &RayLanes, t_min: f32, t_max: f32) -> [Option<f32>; 2] {
         let mut near = Vec4::splat(t_min);
         let mut far = Vec4::splat(t_max);
         for (axis, planes) in [self.x, self.y, self.z].into_iter().enumerate() {
             let t = (planes - ray.origin[axis]) * ray.inv_dir[axis];
+            let t = if ray.has_zero_direction {
+                Vec4::select(t.is_nan_mask(), -t.zwxy(), t)
+            } else {
+                t
+            };
             let swapped = t.zwxy();
             near = t.min(swapped).max(near);
             far = (t.max(swapped) * (1.0 + 2.0 * gamma(3))).min(far);

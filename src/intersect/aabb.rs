@@ -90,8 +90,12 @@ impl Aabb {
         t_min: f32,
         t_max: f32,
     ) -> Option<f32> {
-        let t0 = (Vec3A::from(self.min) - origin) * inv_dir;
-        let t1 = (Vec3A::from(self.max) - origin) * inv_dir;
+        let to_min = (Vec3A::from(self.min) - origin) * inv_dir;
+        let to_max = (Vec3A::from(self.max) - origin) * inv_dir;
+        // A ray with d = ±0 starting on a plane gets 0 * inf = NaN there; it
+        // lies inside that slab, so make the slab (-inf, inf).
+        let t0 = Vec3A::select(to_min.is_nan_mask(), -to_max, to_min);
+        let t1 = Vec3A::select(to_max.is_nan_mask(), -to_min, to_max);
         let near = t0.min(t1);
         let far = t0.max(t1) * (1.0 + 2.0 * gamma(3));
         let enter = near.max_element().max(t_min);
@@ -116,6 +120,17 @@ mod tests {
         assert_eq!(b.hit_distance(o, inv, 0.0, 1.5), None);
         let o_above = Vec3A::new(-2.0, 1.5, 0.5);
         assert_eq!(b.hit_distance(o_above, inv, 0.0, f32::INFINITY), None);
+        // Along the face y = 1 (d_y = 0): on the boundary counts as inside.
+        let o_on_face = Vec3A::new(-2.0, 1.0, 0.5);
+        assert_eq!(
+            b.hit_distance(o_on_face, inv, 0.0, f32::INFINITY),
+            Some(2.0)
+        );
+        let inv_neg_zero = Vec3A::new(1.0, f32::NEG_INFINITY, f32::INFINITY);
+        assert_eq!(
+            b.hit_distance(o_on_face, inv_neg_zero, 0.0, f32::INFINITY),
+            Some(2.0)
+        );
     }
 
     #[test]
