@@ -63,11 +63,21 @@ pub fn render_normals(
 fn report_render(stats: &RenderStats, settings: &RenderSettings) {
     let rays = settings.width as f64 * settings.height as f64 * settings.samples_per_pixel as f64;
     println!(
-        "render: {:.3} s on {} threads, {:.3} Mrays/s",
+        "render: {:.3} s on {} threads, {} camera rays/s",
         stats.seconds,
         stats.threads,
-        rays / stats.seconds / 1e6
+        si(rays / stats.seconds)
     );
+}
+
+/// `x` with three significant digits and an SI prefix: `4.74 k`, `14.9 M`.
+pub fn si(x: f64) -> String {
+    let (value, prefix) = [(1e9, "G"), (1e6, "M"), (1e3, "k")]
+        .into_iter()
+        .find(|(scale, _)| x.abs() >= *scale)
+        .map_or((x, ""), |(scale, p)| (x / scale, p));
+    let decimals = if value.abs() >= 100.0 { 0 } else if value.abs() >= 10.0 { 1 } else { 2 };
+    format!("{value:.decimals$} {prefix}")
 }
 
 fn write(film: &Film, args: &CourseArgs) -> Result<()> {
@@ -241,4 +251,17 @@ pub fn bvh_scaling() -> Result<()> {
         );
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::si;
+
+    #[test]
+    fn si_prefixes_keep_three_digits() {
+        assert_eq!(si(4737.0), "4.74 k");
+        assert_eq!(si(14.89e6), "14.9 M");
+        assert_eq!(si(123.4), "123 ");
+        assert_eq!(si(0.5), "0.50 ");
+    }
 }
