@@ -76,7 +76,13 @@ pub fn si(x: f64) -> String {
         .into_iter()
         .find(|(scale, _)| x.abs() >= *scale)
         .map_or((x, ""), |(scale, p)| (x / scale, p));
-    let decimals = if value.abs() >= 100.0 { 0 } else if value.abs() >= 10.0 { 1 } else { 2 };
+    let decimals = if value.abs() >= 100.0 {
+        0
+    } else if value.abs() >= 10.0 {
+        1
+    } else {
+        2
+    };
     format!("{value:.decimals$} {prefix}")
 }
 
