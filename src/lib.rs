@@ -15,9 +15,13 @@
 //!
 //! Conventions are in `docs/00-conventions.md`.
 
+pub mod adaptive;
 pub mod bvh;
 pub mod cli;
+pub mod direct;
+pub mod global;
 pub mod intersect;
+pub mod materials;
 pub mod math;
 pub mod raygen;
 pub mod render;

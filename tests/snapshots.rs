@@ -101,7 +101,39 @@ fn part2_bvh_normal_shading() {
 fn pathtracer_default_render() {
     assert_close_to_snapshot(
         "pathtracer",
-        &render_with(drivers::pathtracer, &["-s", "4"]),
+        &render_with(drivers::pathtracer, &["-s", "4", "-m", "2"]),
+    );
+}
+
+#[test]
+fn part3_direct_light_sampling() {
+    assert_close_to_snapshot(
+        "part3-direct",
+        &render_with(drivers::part3, &["-s", "4", "-l", "2"]),
+    );
+}
+
+#[test]
+fn part3_direct_hemisphere_sampling() {
+    assert_close_to_snapshot(
+        "part3-direct-hemisphere",
+        &render_with(drivers::part3, &["-s", "4", "-l", "2", "-H"]),
+    );
+}
+
+#[test]
+fn part4_global_illumination() {
+    assert_close_to_snapshot(
+        "part4-global",
+        &render_with(drivers::part4, &["-s", "4", "-m", "4"]),
+    );
+}
+
+#[test]
+fn part5_adaptive_sampling() {
+    assert_close_to_snapshot(
+        "part5-adaptive",
+        &render_with(drivers::part5, &["-s", "16", "-m", "3", "-a", "8", "0.1"]),
     );
 }
 

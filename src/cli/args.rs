@@ -4,13 +4,14 @@ use std::path::{Path, PathBuf};
 
 use clap::Parser;
 
+use crate::adaptive::Adaptive;
 use crate::render::RenderSettings;
 use crate::scene::{builtin, Scene, SceneError};
 
 /// Largest accepted image side, pixels.
 pub const MAX_SIDE: u32 = 1 << 14;
 
-/// The course's flags that apply to parts 1 and 2.
+/// The course's flags that apply to parts 1 to 5.
 #[derive(Parser, Clone, Debug, PartialEq)]
 #[command(version, about, args_override_self = true)]
 pub struct CourseArgs {
@@ -35,6 +36,30 @@ pub struct CourseArgs {
     /// Default: the scene's name with .png, in the current directory.
     #[arg(short = 'f', value_name = "FILE")]
     pub output: Option<PathBuf>,
+
+    /// Samples per area light (and per light for the ambient sky).
+    #[arg(short = 'l', value_name = "N", default_value_t = 1,
+          value_parser = clap::value_parser!(u32).range(1..=1 << 16))]
+    pub light_samples: u32,
+
+    /// Maximum ray depth: bounces of light (0 shows only emitters).
+    #[arg(short = 'm', value_name = "N", default_value_t = 1,
+          value_parser = clap::value_parser!(u32).range(0..=10_000))]
+    pub max_depth: u32,
+
+    /// 1: add every bounce up to -m; 0: only the light of the m-th bounce.
+    #[arg(short = 'o', value_name = "0|1", default_value_t = 1,
+          value_parser = clap::value_parser!(u8).range(0..=1))]
+    pub accumulate: u8,
+
+    /// Adaptive sampling: test every BATCH samples, stop when the 95 %
+    /// confidence half-width is at most TOL times the pixel's mean.
+    #[arg(short = 'a', num_args = 2, value_names = ["BATCH", "TOL"])]
+    pub adaptive: Option<Vec<f32>>,
+
+    /// Direct lighting by uniform hemisphere sampling instead of light sampling.
+    #[arg(short = 'H')]
+    pub hemisphere: bool,
 
     /// Print what the scene holds, one item a line, and exit.
     #[arg(long)]
@@ -90,6 +115,29 @@ impl CourseArgs {
         })
     }
 
+    /// `-a BATCH TOL` checked: a whole batch size of at least 1 and a
+    /// positive tolerance.
+    pub fn adaptive_settings(&self) -> Result<Option<Adaptive>, String> {
+        let Some(values) = &self.adaptive else {
+            return Ok(None);
+        };
+        let (batch, tolerance) = (values[0], values[1]);
+        if !(batch >= 1.0 && batch.fract() == 0.0 && batch <= 1e6) {
+            return Err(format!(
+                "-a: the batch size must be a whole number from 1, not {batch}"
+            ));
+        }
+        if !(tolerance > 0.0 && tolerance.is_finite()) {
+            return Err(format!(
+                "-a: the tolerance must be positive, not {tolerance}"
+            ));
+        }
+        Ok(Some(Adaptive {
+            batch: batch as u32,
+            tolerance,
+        }))
+    }
+
     /// The render settings these flags ask for (progress bar on).
     pub fn render_settings(&self) -> RenderSettings {
         RenderSettings {
@@ -119,12 +167,45 @@ mod tests {
         );
         assert_eq!(a.output_path(), PathBuf::from("x.png"));
         assert_eq!(a.scene, Some(PathBuf::from("s.dae")));
+        let b = CourseArgs::try_parse_from([
+            "p", "-l", "4", "-m", "5", "-o", "0", "-a", "16", "0.1", "-H",
+        ])
+        .unwrap();
+        assert_eq!(
+            (b.light_samples, b.max_depth, b.accumulate, b.hemisphere),
+            (4, 5, 0, true)
+        );
+        assert_eq!(
+            b.adaptive_settings(),
+            Ok(Some(Adaptive {
+                batch: 16,
+                tolerance: 0.1
+            }))
+        );
+    }
+
+    #[test]
+    fn bad_adaptive_settings_are_refused() {
+        for bad in [
+            ["p", "-a", "0", "0.1"],
+            ["p", "-a", "2.5", "0.1"],
+            ["p", "-a", "8", "0"],
+            ["p", "-a", "8", "nan"],
+        ] {
+            let args = CourseArgs::try_parse_from(bad).unwrap();
+            assert!(args.adaptive_settings().is_err(), "{bad:?}");
+        }
     }
 
     #[test]
     fn defaults_are_the_course_defaults() {
         let a = CourseArgs::try_parse_from(["p"]).unwrap();
         assert_eq!((a.samples, a.width(), a.height()), (1, 800, 600));
+        assert_eq!(
+            (a.light_samples, a.max_depth, a.accumulate, a.hemisphere),
+            (1, 1, 1, false)
+        );
+        assert_eq!(a.adaptive_settings(), Ok(None));
         assert_eq!(a.output_path(), PathBuf::from("cornell-box.png"));
     }
 

@@ -2,6 +2,9 @@
 //!
 //! - Uniform sphere: `z = 1 - 2 u1`, `phi = 2 pi u2`, pdf `1 / (4 pi)`.
 //! - Uniform hemisphere (around +Z): `z = u1`, `phi = 2 pi u2`, pdf `1 / (2 pi)`.
+//! - Cosine hemisphere (around +Z): a uniform point on the unit disk
+//!   (concentric map) lifted by `z = sqrt(1 - x^2 - y^2)`, pdf `cos(theta) / pi`
+//!   (Malley's method; pbrt-v4, section A.5.3).
 //!
 //! Both follow from inverting the CDF of `z`, which is uniform on the
 //! sphere by Archimedes' hat-box theorem (pbrt-v4, section A.5).
@@ -33,6 +36,46 @@ pub fn sample_uniform_hemisphere(u: Vec2) -> Vec3 {
 pub fn uniform_hemisphere_pdf(w: Vec3) -> f32 {
     if w.z >= 0.0 {
         1.0 / (2.0 * PI)
+    } else {
+        0.0
+    }
+}
+
+/// A point uniform on the unit disk by Shirley and Chiu's concentric map
+/// ("A Low Distortion Map Between Disk and Square", 1997), from `u` in
+/// `[0, 1)^2`; density `1 / pi` per unit area.
+pub fn sample_uniform_disk_concentric(u: Vec2) -> Vec2 {
+    let offset = 2.0 * u - Vec2::ONE;
+    if offset == Vec2::ZERO {
+        return Vec2::ZERO;
+    }
+    let (r, theta) = if offset.x.abs() > offset.y.abs() {
+        (
+            offset.x,
+            std::f32::consts::FRAC_PI_4 * (offset.y / offset.x),
+        )
+    } else {
+        (
+            offset.y,
+            std::f32::consts::FRAC_PI_2 - std::f32::consts::FRAC_PI_4 * (offset.x / offset.y),
+        )
+    };
+    r * Vec2::new(theta.cos(), theta.sin())
+}
+
+/// A direction on the hemisphere `z >= 0` with density `cos(theta) / pi`,
+/// by Malley's method: a uniform point on the disk lifted to the hemisphere.
+pub fn sample_cosine_hemisphere(u: Vec2) -> Vec3 {
+    let d = sample_uniform_disk_concentric(u);
+    let z = (1.0 - d.length_squared()).max(0.0).sqrt();
+    Vec3::new(d.x, d.y, z)
+}
+
+/// Density of [`sample_cosine_hemisphere`]: `cos(theta) / pi` per
+/// steradian for `w.z > 0`, else 0.
+pub fn cosine_hemisphere_pdf(w: Vec3) -> f32 {
+    if w.z > 0.0 {
+        w.z / PI
     } else {
         0.0
     }

@@ -7,11 +7,15 @@
 
 pub mod film;
 pub mod output;
+pub mod rendered;
 pub mod tiles;
 
 pub use film::Film;
-pub use output::{tone_map, write_image, OutputError};
+pub use output::{tone_map, write_image, write_png, OutputError};
+pub use rendered::Rendered;
 pub use tiles::{render_tiles, RenderSettings, RenderStats};
+
+use crate::adaptive::{Adaptive, LuminanceStats};
 
 use glam::Vec2;
 
@@ -34,27 +38,58 @@ pub fn pixel_ray(camera: &Camera, width: u32, height: u32, x: u32, y: u32, offse
     )
 }
 
-/// The mean of `samples` radiance estimates for pixel `(x, y)`: one ray
-/// through the pixel centre when `samples == 1` (as the course does),
-/// otherwise rays at uniformly random offsets in the pixel.
+/// What a pixel's samples gave.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct PixelEstimate {
+    /// Mean radiance of the accepted samples.
+    pub radiance: Rgb,
+    /// Camera rays traced for the pixel (accepted or not).
+    pub samples: u32,
+    /// Samples rejected for a NaN or infinite radiance (left out of the mean).
+    pub rejected: u32,
+    /// Squared standard error of the mean luminance (0 with one sample).
+    pub variance_of_mean: f64,
+}
+
+/// Estimates pixel `(x, y)` with up to `max_samples` camera rays: one ray
+/// through the pixel centre when `max_samples == 1` (as the course does),
+/// otherwise rays at uniformly random offsets in the pixel, stopping early
+/// when `adaptive` says the pixel has converged. `radiance` gives each
+/// ray's radiance estimate; non-finite ones are counted and left out.
 #[doc(alias = "raytrace_pixel")]
-pub fn sample_pixel(
+pub fn estimate_pixel(
     camera: &Camera,
-    width: u32,
-    height: u32,
+    (width, height): (u32, u32),
     (x, y): (u32, u32),
-    samples: u32,
+    max_samples: u32,
+    adaptive: Option<Adaptive>,
     rng: &mut Sampler,
     mut radiance: impl FnMut(&Ray, &mut Sampler) -> Rgb,
-) -> Rgb {
-    if samples <= 1 {
-        let ray = pixel_ray(camera, width, height, x, y, Vec2::splat(0.5));
-        return radiance(&ray, rng);
-    }
+) -> PixelEstimate {
+    let mut stats = LuminanceStats::default();
     let mut sum = Rgb::ZERO;
-    for _ in 0..samples {
-        let ray = pixel_ray(camera, width, height, x, y, next_2d(rng));
-        sum += radiance(&ray, rng);
+    let mut estimate = PixelEstimate::default();
+    while estimate.samples < max_samples.max(1) {
+        let offset = if max_samples <= 1 {
+            Vec2::splat(0.5)
+        } else {
+            next_2d(rng)
+        };
+        let l = radiance(&pixel_ray(camera, width, height, x, y, offset), rng);
+        estimate.samples += 1;
+        if !l.is_finite() {
+            estimate.rejected += 1;
+            continue;
+        }
+        sum += l;
+        stats.push(l);
+        if adaptive.is_some_and(|a| a.should_stop(&stats)) {
+            break;
+        }
     }
-    sum / samples as f32
+    if stats.n > 0 {
+        estimate.radiance = sum / stats.n as f32;
+    }
+    estimate.variance_of_mean = stats.variance_of_mean();
+    estimate
 }

@@ -36,33 +36,48 @@ pub fn tone_map(radiance: Rgb) -> Rgb {
 /// Writes `film` to `path`: OpenEXR (linear) for `.exr`, otherwise PNG
 /// (tone mapped).
 pub fn write_image(film: &Film, path: &Path) -> Result<(), OutputError> {
+    let is_exr = path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("exr"));
+    if !is_exr {
+        let display: Vec<Rgb> = film.pixels.iter().map(|&p| tone_map(p)).collect();
+        return write_png(film.width, film.height, &display, path);
+    }
     let fail = |problem: String| OutputError {
         path: path.to_path_buf(),
         problem,
     };
-    let is_exr = path
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("exr"));
+    let data = film.pixels.iter().flat_map(|p| p.to_array()).collect();
+    let image = Rgb32FImage::from_raw(film.width, film.height, data)
+        .ok_or_else(|| fail("film size does not match its pixels".into()))?;
     let mut bytes = Cursor::new(Vec::new());
-    if is_exr {
-        let data = film.pixels.iter().flat_map(|p| p.to_array()).collect();
-        let image = Rgb32FImage::from_raw(film.width, film.height, data)
-            .ok_or_else(|| fail("film size does not match its pixels".into()))?;
-        image
-            .write_to(&mut bytes, ImageFormat::OpenExr)
-            .map_err(|e| fail(format!("cannot encode OpenEXR: {e}")))?;
-    } else {
-        let data = film
-            .pixels
-            .iter()
-            .flat_map(|p| (tone_map(*p) * 255.0).round().to_array().map(|v| v as u8))
-            .collect();
-        let image = RgbImage::from_raw(film.width, film.height, data)
-            .ok_or_else(|| fail("film size does not match its pixels".into()))?;
-        image
-            .write_to(&mut bytes, ImageFormat::Png)
-            .map_err(|e| fail(format!("cannot encode PNG: {e}")))?;
-    }
+    image
+        .write_to(&mut bytes, ImageFormat::OpenExr)
+        .map_err(|e| fail(format!("cannot encode OpenEXR: {e}")))?;
+    write_atomically(path, bytes.get_ref()).map_err(|e| fail(e.to_string()))
+}
+
+/// Writes display values in `[0, 1]` (row 0 at the top) as an 8-bit PNG.
+pub fn write_png(width: u32, height: u32, display: &[Rgb], path: &Path) -> Result<(), OutputError> {
+    let fail = |problem: String| OutputError {
+        path: path.to_path_buf(),
+        problem,
+    };
+    let data = display
+        .iter()
+        .flat_map(|p| {
+            (p.clamp(Rgb::ZERO, Rgb::ONE) * 255.0)
+                .round()
+                .to_array()
+                .map(|v| v as u8)
+        })
+        .collect();
+    let image = RgbImage::from_raw(width, height, data)
+        .ok_or_else(|| fail("image size does not match its pixels".into()))?;
+    let mut bytes = Cursor::new(Vec::new());
+    image
+        .write_to(&mut bytes, ImageFormat::Png)
+        .map_err(|e| fail(format!("cannot encode PNG: {e}")))?;
     write_atomically(path, bytes.get_ref()).map_err(|e| fail(e.to_string()))
 }
 

@@ -6,9 +6,7 @@ use std::time::Instant;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
 
-use super::Film;
 use crate::math::rng::{sampler, Sampler};
-use crate::math::Rgb;
 
 /// Side of a square tile, pixels.
 pub const TILE_SIZE: u32 = 32;
@@ -52,10 +50,11 @@ pub struct RenderStats {
 
 /// Renders every pixel with `shade(x, y, rng)`, where `rng` is pixel
 /// `(x, y)`'s own generator. Tiles run in parallel on `settings.threads`.
-pub fn render_tiles(
+/// Returns the pixels' results row by row, row 0 at the top.
+pub fn render_tiles<T: Copy + Default + Send>(
     settings: &RenderSettings,
-    shade: impl Fn(u32, u32, &mut Sampler) -> Rgb + Sync,
-) -> (Film, RenderStats) {
+    shade: impl Fn(u32, u32, &mut Sampler) -> T + Sync,
+) -> (Vec<T>, RenderStats) {
     let (width, height) = (settings.width, settings.height);
     let tiles: Vec<(u32, u32)> = (0..height.div_ceil(TILE_SIZE))
         .flat_map(|ty| {
@@ -68,7 +67,7 @@ pub fn render_tiles(
         .build()
         .expect("a thread pool");
     let start = Instant::now();
-    let rendered: Vec<Vec<Rgb>> = pool.install(|| {
+    let rendered: Vec<Vec<T>> = pool.install(|| {
         tiles
             .par_iter()
             .map(|&(x0, y0)| {
@@ -86,19 +85,19 @@ pub fn render_tiles(
     });
     let seconds = start.elapsed().as_secs_f64();
     bar.finish_and_clear();
-    let mut film = Film::new(width, height);
+    let mut image = vec![T::default(); width as usize * height as usize];
     for (&(x0, y0), pixels) in tiles.iter().zip(rendered) {
         let tile_width = (x0 + TILE_SIZE).min(width) - x0;
         for (i, value) in pixels.into_iter().enumerate() {
             let (x, y) = (x0 + i as u32 % tile_width, y0 + i as u32 / tile_width);
-            film.pixels[(y * width + x) as usize] = value;
+            image[(y * width + x) as usize] = value;
         }
     }
     let stats = RenderStats {
         seconds,
         threads: pool.current_num_threads(),
     };
-    (film, stats)
+    (image, stats)
 }
 
 fn progress_bar(enabled: bool, tiles: u64) -> ProgressBar {

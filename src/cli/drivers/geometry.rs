@@ -1,124 +1,59 @@
-//! What each binary does, so that `bin/` holds no logic and the tests run
-//! exactly what the binaries run.
+//! Parts 1 and 2: normal shading by linear scan and through the BVH, and
+//! the BVH benchmarks.
 
-use std::error::Error;
 use std::time::Instant;
 
+use super::{describe_or, prepare, report_render, write_film, Result};
 use crate::bvh::BvhAccel;
-use crate::intersect::{Intersector, LinearScan, Primitives, Ray};
+use crate::cli::CourseArgs;
+use crate::intersect::{Intersector, LinearScan, Ray};
 use crate::raygen::{Camera, NormalShading};
-use crate::render::{
-    pixel_ray, render_tiles, sample_pixel, write_image, Film, RenderSettings, RenderStats,
-};
-use crate::scene::info::describe;
-use crate::scene::Scene;
-
-use super::CourseArgs;
-
-type Result<T> = std::result::Result<T, Box<dyn Error>>;
-
-/// A loaded scene with its primitives and the course's camera for the
-/// requested size; prints the loader's warnings.
-pub struct Prepared {
-    pub scene: Scene,
-    pub primitives: Primitives,
-    pub camera: Camera,
-}
-
-/// Loads the scene named by `args` and places the camera.
-pub fn prepare(args: &CourseArgs) -> Result<Prepared> {
-    let scene = args.load_scene()?;
-    for warning in &scene.warnings {
-        eprintln!("warning: {}: {warning}", scene.source);
-    }
-    let primitives = Primitives::from_scene(&scene);
-    let camera = Camera::course_placement(
-        &scene.camera,
-        &primitives.bounds(),
-        args.width(),
-        args.height(),
-    );
-    Ok(Prepared {
-        scene,
-        primitives,
-        camera,
-    })
-}
+use crate::render::{estimate_pixel, pixel_ray, render_tiles, RenderSettings, Rendered};
 
 /// Renders normal shading through `intersector`.
 pub fn render_normals(
     intersector: impl Intersector,
     camera: &Camera,
     settings: &RenderSettings,
-) -> (Film, RenderStats) {
+) -> Rendered {
     let shading = NormalShading { intersector };
-    let (w, h, spp) = (settings.width, settings.height, settings.samples_per_pixel);
-    render_tiles(settings, |x, y, rng| {
-        sample_pixel(camera, w, h, (x, y), spp, rng, |ray, _| {
-            shading.radiance(ray)
-        })
-    })
-}
-
-fn report_render(stats: &RenderStats, settings: &RenderSettings) {
-    let rays = settings.width as f64 * settings.height as f64 * settings.samples_per_pixel as f64;
-    println!(
-        "render: {:.3} s on {} threads, {} camera rays/s",
-        stats.seconds,
-        stats.threads,
-        si(rays / stats.seconds)
-    );
-}
-
-/// `x` with three significant digits and an SI prefix: `4.74 k`, `14.9 M`.
-pub fn si(x: f64) -> String {
-    let (value, prefix) = [(1e9, "G"), (1e6, "M"), (1e3, "k")]
-        .into_iter()
-        .find(|(scale, _)| x.abs() >= *scale)
-        .map_or((x, ""), |(scale, p)| (x / scale, p));
-    let decimals = if value.abs() >= 100.0 {
-        0
-    } else if value.abs() >= 10.0 {
-        1
-    } else {
-        2
-    };
-    format!("{value:.decimals$} {prefix}")
-}
-
-fn write(film: &Film, args: &CourseArgs) -> Result<()> {
-    let path = args.output_path();
-    write_image(film, &path)?;
-    println!("wrote {}", path.display());
-    Ok(())
+    let size = (settings.width, settings.height);
+    let (estimates, stats) = render_tiles(settings, |x, y, rng| {
+        estimate_pixel(
+            camera,
+            size,
+            (x, y),
+            settings.samples_per_pixel,
+            None,
+            rng,
+            |ray, _| shading.radiance(ray),
+        )
+    });
+    Rendered::new(settings.width, settings.height, estimates, stats)
 }
 
 /// `part1-raygen`: normal shading, testing every primitive for every ray.
 pub fn part1(args: &CourseArgs) -> Result<()> {
-    let p = prepare(args)?;
-    if args.info {
-        print!("{}", describe(&p.scene, &p.camera));
+    let Some(p) = describe_or(prepare(args)?, args) else {
         return Ok(());
-    }
+    };
     println!(
         "{}: {} primitives, linear scan",
         p.scene.source,
         p.primitives.len()
     );
     let settings = args.render_settings();
-    let (film, stats) = render_normals(LinearScan::new(&p.primitives), &p.camera, &settings);
-    report_render(&stats, &settings);
-    write(&film, args)
+    let rendered = render_normals(LinearScan::new(&p.primitives), &p.camera, &settings);
+    report_render(&rendered);
+    write_film(&rendered, args)
 }
 
 /// `part2-bvh`: normal shading through a BVH, with its build time and its
 /// speed-up over part 1's linear scan.
 pub fn part2(args: &CourseArgs) -> Result<()> {
-    let p = prepare(args)?;
-    if args.info {
-        print!("{}", describe(&p.scene, &p.camera));
+    let Some(p) = describe_or(prepare(args)?, args) else {
         return Ok(());
-    }
+    };
     let count = p.primitives.len();
     let start = Instant::now();
     let accel = BvhAccel::new(p.primitives);
@@ -130,14 +65,14 @@ pub fn part2(args: &CourseArgs) -> Result<()> {
         accel.bvh.nodes.len()
     );
     let settings = args.render_settings();
-    let (film, stats) = render_normals(&accel, &p.camera, &settings);
-    report_render(&stats, &settings);
+    let rendered = render_normals(&accel, &p.camera, &settings);
+    report_render(&rendered);
     let speedup = measure_speedup(&accel, &p.camera, &settings);
     println!(
         "speed-up over the linear scan: {:.1}x (one thread, {} of {} pixels, {} disagreements)",
         speedup.ratio, speedup.rays, speedup.pixels, speedup.disagreements
     );
-    write(&film, args)
+    write_film(&rendered, args)
 }
 
 /// BVH against linear scan on the same camera rays.
@@ -198,25 +133,6 @@ pub fn measure_speedup(accel: &BvhAccel, camera: &Camera, settings: &RenderSetti
     }
 }
 
-/// `pathtracer`: for now parts 1 and 2 (normal shading through the BVH);
-/// the lighting parts plug in here.
-pub fn pathtracer(args: &CourseArgs) -> Result<()> {
-    let p = prepare(args)?;
-    if args.info {
-        print!("{}", describe(&p.scene, &p.camera));
-        return Ok(());
-    }
-    let accel = BvhAccel::new(p.primitives);
-    let settings = args.render_settings();
-    let (film, stats) = render_normals(&accel, &p.camera, &settings);
-    report_render(&stats, &settings);
-    let bad = film.non_finite_count();
-    if bad > 0 {
-        eprintln!("warning: {bad} pixels are NaN or infinite");
-    }
-    write(&film, args)
-}
-
 /// `part2-bvh --bench [-t N]`: the ray-throughput benchmark
 /// ([`crate::bvh::throughput`]): one thread, then `threads` (default: all cores).
 pub fn bvh_benchmark(threads: Option<usize>) -> Result<()> {
@@ -257,17 +173,4 @@ pub fn bvh_scaling() -> Result<()> {
         );
     }
     Ok(())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::si;
-
-    #[test]
-    fn si_prefixes_keep_three_digits() {
-        assert_eq!(si(4737.0), "4.74 k");
-        assert_eq!(si(14.89e6), "14.9 M");
-        assert_eq!(si(123.4), "123 ");
-        assert_eq!(si(0.5), "0.50 ");
-    }
 }

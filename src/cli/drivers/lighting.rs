@@ -1,0 +1,185 @@
+//! Parts 3 to 5: direct lighting, global illumination and adaptive
+//! sampling, and the full `pathtracer`.
+
+use std::time::Instant;
+
+use super::{describe_or, prepare, report_render, write_film, Prepared, Result};
+use crate::adaptive::Adaptive;
+use crate::bvh::BvhAccel;
+use crate::cli::CourseArgs;
+use crate::direct::{DirectHemisphere, DirectLights, SceneTracer};
+use crate::global::{DirectStrategy, PathTracer};
+use crate::intersect::Intersector;
+use crate::raygen::Camera;
+use crate::render::rendered::rate_image_path;
+use crate::render::{estimate_pixel, render_tiles, RenderSettings, Rendered};
+use crate::scene::Scene;
+
+/// Renders `tracer`'s radiance estimate for every pixel, up to `-s`
+/// samples each, stopping early where `adaptive` says so.
+pub fn render_lighting<I: Intersector>(
+    scene: &SceneTracer<I>,
+    tracer: &PathTracer,
+    camera: &Camera,
+    settings: &RenderSettings,
+    adaptive: Option<Adaptive>,
+) -> Rendered {
+    let size = (settings.width, settings.height);
+    let (estimates, stats) = render_tiles(settings, |x, y, rng| {
+        estimate_pixel(
+            camera,
+            size,
+            (x, y),
+            settings.samples_per_pixel,
+            adaptive,
+            rng,
+            |ray, rng| tracer.radiance(scene, ray, rng),
+        )
+    });
+    Rendered::new(settings.width, settings.height, estimates, stats)
+}
+
+/// The direct-lighting strategy the flags ask for: `-H` for hemisphere
+/// sampling with (number of lights) x `-l` directions, else light sampling
+/// with `-l` samples per area light.
+pub fn direct_strategy(args: &CourseArgs, scene: &Scene) -> DirectStrategy {
+    if args.hemisphere {
+        let lights = scene.lights.len().max(1) as u32;
+        DirectStrategy::Hemisphere(DirectHemisphere {
+            samples: lights * args.light_samples,
+        })
+    } else {
+        DirectStrategy::Lights(DirectLights {
+            samples_per_light: args.light_samples,
+        })
+    }
+}
+
+/// What a part renders: its path tracer and whether it samples adaptively.
+struct Part {
+    tracer: PathTracer,
+    adaptive: Option<Adaptive>,
+    rate_image: bool,
+}
+
+fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
+    let Some(Prepared {
+        scene,
+        primitives,
+        camera,
+    }) = describe_or(prepare(args)?, args)
+    else {
+        return Ok(());
+    };
+    let part = part(&scene)?;
+    warn_about_stand_ins(&scene);
+    let start = Instant::now();
+    let accel = BvhAccel::new(primitives);
+    println!(
+        "{}: BVH build {:.3} s",
+        scene.source,
+        start.elapsed().as_secs_f64()
+    );
+    let tracer = SceneTracer::new(&scene, &accel);
+    let settings = args.render_settings();
+    let rendered = render_lighting(&tracer, &part.tracer, &camera, &settings, part.adaptive);
+    report_render(&rendered);
+    match rendered.relative_error() {
+        Some(e) => println!("error: relative standard error {:.2} % (RMS of pixel standard errors / mean luminance)", 100.0 * e),
+        None => println!("error: not estimated (needs at least 2 samples per pixel)"),
+    }
+    if part.adaptive.is_some() {
+        println!(
+            "adaptive: mean samples per pixel {:.2} of {}",
+            rendered.mean_samples_per_pixel(),
+            settings.samples_per_pixel
+        );
+    }
+    write_film(&rendered, args)?;
+    if part.rate_image {
+        let path = rate_image_path(&args.output_path());
+        rendered.write_rate_image(settings.samples_per_pixel, &path)?;
+        println!("wrote {}", path.display());
+    }
+    Ok(())
+}
+
+/// Names the materials that render as diffuse until their part exists.
+fn warn_about_stand_ins(scene: &Scene) {
+    let mut kinds: Vec<&str> = scene
+        .materials
+        .iter()
+        .filter(|m| crate::materials::Bsdf::for_material(m).1)
+        .map(|m| m.kind())
+        .collect();
+    kinds.sort_unstable();
+    kinds.dedup();
+    if !kinds.is_empty() {
+        eprintln!(
+            "warning: {}: {} rendered as diffuse (their BSDFs come with assignment 3-2)",
+            scene.source,
+            kinds.join(", ")
+        );
+    }
+}
+
+/// `part3-direct`: emission plus direct lighting (`-H` or light sampling).
+pub fn part3(args: &CourseArgs) -> Result<()> {
+    run(args, |scene| {
+        Ok(Part {
+            tracer: PathTracer {
+                direct: direct_strategy(args, scene),
+                max_depth: 1,
+                accumulate: true,
+                russian_roulette: false,
+            },
+            adaptive: None,
+            rate_image: false,
+        })
+    })
+}
+
+/// The path tracer the flags ask for (`-H`, `-l`, `-m`, `-o`).
+fn path_tracer(args: &CourseArgs, scene: &Scene) -> PathTracer {
+    PathTracer {
+        direct: direct_strategy(args, scene),
+        max_depth: args.max_depth,
+        accumulate: args.accumulate == 1,
+        russian_roulette: true,
+    }
+}
+
+/// `part4-global`: paths up to `-m` bounces with Russian roulette.
+pub fn part4(args: &CourseArgs) -> Result<()> {
+    run(args, |scene| {
+        Ok(Part {
+            tracer: path_tracer(args, scene),
+            adaptive: None,
+            rate_image: false,
+        })
+    })
+}
+
+/// `part5-adaptive`: part 4 with adaptive sampling (`-a`, default 32 0.05)
+/// and the sample-rate image.
+pub fn part5(args: &CourseArgs) -> Result<()> {
+    run(args, |scene| {
+        Ok(Part {
+            tracer: path_tracer(args, scene),
+            adaptive: Some(args.adaptive_settings()?.unwrap_or_default()),
+            rate_image: true,
+        })
+    })
+}
+
+/// `pathtracer`: parts 1 to 5 with the course's flags; adaptive sampling
+/// only with `-a`, the sample-rate image always (as the course writes it).
+pub fn pathtracer(args: &CourseArgs) -> Result<()> {
+    run(args, |scene| {
+        Ok(Part {
+            tracer: path_tracer(args, scene),
+            adaptive: args.adaptive_settings()?,
+            rate_image: true,
+        })
+    })
+}

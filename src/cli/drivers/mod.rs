@@ -1,0 +1,112 @@
+//! What each binary does, so that `bin/` holds no logic and the tests run
+//! exactly what the binaries run.
+
+pub mod geometry;
+pub mod lighting;
+
+pub use geometry::{
+    bvh_benchmark, bvh_scaling, measure_speedup, part1, part2, render_normals, Speedup,
+};
+pub use lighting::{part3, part4, part5, pathtracer, render_lighting};
+
+use std::error::Error;
+
+use super::CourseArgs;
+use crate::intersect::Primitives;
+use crate::raygen::Camera;
+use crate::render::Rendered;
+use crate::scene::info::describe;
+use crate::scene::Scene;
+
+type Result<T> = std::result::Result<T, Box<dyn Error>>;
+
+/// A loaded scene with its primitives and the course's camera for the
+/// requested size.
+pub struct Prepared {
+    pub scene: Scene,
+    pub primitives: Primitives,
+    pub camera: Camera,
+}
+
+/// Loads the scene named by `args` (printing the loader's warnings) and
+/// places the camera.
+pub fn prepare(args: &CourseArgs) -> Result<Prepared> {
+    let scene = args.load_scene()?;
+    for warning in &scene.warnings {
+        eprintln!("warning: {}: {warning}", scene.source);
+    }
+    let primitives = Primitives::from_scene(&scene);
+    let camera = Camera::course_placement(
+        &scene.camera,
+        &primitives.bounds(),
+        args.width(),
+        args.height(),
+    );
+    Ok(Prepared {
+        scene,
+        primitives,
+        camera,
+    })
+}
+
+/// With `--info`, prints the scene's summary and gives `None`.
+fn describe_or(prepared: Prepared, args: &CourseArgs) -> Option<Prepared> {
+    if args.info {
+        print!("{}", describe(&prepared.scene, &prepared.camera));
+        None
+    } else {
+        Some(prepared)
+    }
+}
+
+/// Prints render time, ray rate, rejected samples and non-finite pixels.
+fn report_render(rendered: &Rendered) {
+    let stats = &rendered.stats;
+    println!(
+        "render: {:.3} s on {} threads, {} camera rays/s",
+        stats.seconds,
+        stats.threads,
+        si(rendered.samples() as f64 / stats.seconds)
+    );
+    let rejected = rendered.rejected();
+    if rejected > 0 {
+        eprintln!("warning: {rejected} samples were NaN or infinite and were left out");
+    }
+}
+
+/// Writes the film where `-f` (or the default) says and tells where.
+fn write_film(rendered: &Rendered, args: &CourseArgs) -> Result<()> {
+    let path = args.output_path();
+    crate::render::write_image(&rendered.film, &path)?;
+    println!("wrote {}", path.display());
+    Ok(())
+}
+
+/// `x` with three significant digits and an SI prefix: `4.74 k`, `14.9 M`.
+pub fn si(x: f64) -> String {
+    let (value, prefix) = [(1e9, "G"), (1e6, "M"), (1e3, "k")]
+        .into_iter()
+        .find(|(scale, _)| x.abs() >= *scale)
+        .map_or((x, ""), |(scale, p)| (x / scale, p));
+    let decimals = if value.abs() >= 100.0 {
+        0
+    } else if value.abs() >= 10.0 {
+        1
+    } else {
+        2
+    };
+    format!("{value:.decimals$} {prefix}")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::si;
+
+    #[test]
+    fn si_prefixes_keep_three_digits() {
+        assert_eq!(si(4737.0), "4.74 k");
+        assert_eq!(si(14.89e6), "14.9 M");
+        assert_eq!(si(123.4), "123 ");
+        assert_eq!(si(0.5), "0.50 ");
+    }
+}

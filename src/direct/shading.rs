@@ -1,0 +1,176 @@
+//! What the lighting estimators share: a scene with its intersector, and a
+//! hit prepared for shading (frame, BSDF, emission).
+
+use glam::Vec3;
+
+use super::lights::sky_radiance;
+use crate::intersect::{Hit, Intersector, Ray};
+use crate::materials::Bsdf;
+use crate::math::{Frame, Rgb};
+use crate::scene::{Light, Material, Scene};
+
+/// A scene as the lighting estimators see it: an intersector, materials,
+/// lights, and which emissive materials merely show a light to the camera.
+pub struct SceneTracer<'a, I> {
+    pub intersector: I,
+    pub materials: &'a [Material],
+    pub lights: &'a [Light],
+    /// Per material: an emissive surface standing in for one of
+    /// [`Self::lights`] (see [`light_proxies`]).
+    pub proxy: Vec<bool>,
+    /// Whether some surface emits light that no light sampling covers
+    /// (an emissive material that is not a stand-in).
+    pub has_uncovered_emitters: bool,
+}
+
+impl<'a, I: Intersector> SceneTracer<'a, I> {
+    pub fn new(scene: &'a Scene, intersector: I) -> Self {
+        let proxy = light_proxies(scene);
+        let used = used_materials(scene);
+        let has_uncovered_emitters = scene
+            .materials
+            .iter()
+            .enumerate()
+            .any(|(m, material)| used[m] && !proxy[m] && material.emission() != Rgb::ZERO);
+        SceneTracer {
+            intersector,
+            materials: &scene.materials,
+            lights: &scene.lights,
+            proxy,
+            has_uncovered_emitters,
+        }
+    }
+
+    /// The first surface along `ray`, prepared for shading towards the ray's origin.
+    pub fn trace(&self, ray: &Ray) -> Option<ShadingPoint> {
+        let hit = self.intersector.intersect(ray)?;
+        let material = self
+            .materials
+            .get(hit.material as usize)
+            .copied()
+            .unwrap_or(Material::DEFAULT);
+        Some(ShadingPoint::new(hit, -ray.dir, &material))
+    }
+
+    /// Radiance of the ambient sky along a ray that escapes.
+    pub fn sky(&self, w: Vec3) -> Rgb {
+        sky_radiance(self.lights, w)
+    }
+
+    /// Whether the emission of `point` stands in for a scene light.
+    pub fn is_proxy(&self, point: &ShadingPoint) -> bool {
+        self.proxy
+            .get(point.hit.material as usize)
+            .copied()
+            .unwrap_or(false)
+    }
+}
+
+/// Marks, per material, the emissive surfaces that stand in for a light.
+///
+/// The course's Cornell boxes hold an area light and, at the same place,
+/// an emissive `light` mesh of the same radiance. Light sampling already
+/// counts the area light, so that mesh's emission may only be added where
+/// nothing samples it: when the camera sees it (or, later, after a
+/// specular bounce). A material is such a stand-in when it is emissive and
+/// every triangle using it lies within reach of an area light of the same
+/// radiance: each vertex closer to the light's centre than the light's
+/// half-diagonal plus 10 % of it, and within 1 % of that diagonal of its plane.
+/// Every other emissive surface lights the scene through the paths that hit it.
+pub fn light_proxies(scene: &Scene) -> Vec<bool> {
+    let mut proxy: Vec<bool> = scene
+        .materials
+        .iter()
+        .map(|m| matches!(m, Material::Emission { .. }))
+        .collect();
+    for (corners, &material) in scene.mesh.triangles.iter().zip(&scene.mesh.materials) {
+        let m = material as usize;
+        let Some(&Material::Emission { radiance }) = scene.materials.get(m) else {
+            continue;
+        };
+        let near_a_light = scene.lights.iter().any(|light| {
+            let Light::Area {
+                radiance: light_radiance,
+                center,
+                direction,
+                dim_x,
+                dim_y,
+            } = *light
+            else {
+                return false;
+            };
+            let diagonal = (dim_x + dim_y).length().max((dim_x - dim_y).length());
+            light_radiance == radiance
+                && corners.iter().all(|&v| {
+                    let q = scene.mesh.positions[v as usize] - center;
+                    q.length() <= 0.55 * diagonal && q.dot(direction).abs() <= 0.01 * diagonal
+                })
+        });
+        proxy[m] &= near_a_light;
+    }
+    // Spheres are never stand-ins.
+    for sphere in &scene.spheres {
+        if let Some(p) = proxy.get_mut(sphere.material as usize) {
+            *p = false;
+        }
+    }
+    let used = used_materials(scene);
+    proxy.iter().zip(&used).map(|(&p, &u)| p && u).collect()
+}
+
+/// Per material, whether any triangle or sphere uses it.
+fn used_materials(scene: &Scene) -> Vec<bool> {
+    let mut used = vec![false; scene.materials.len()];
+    let ids = scene
+        .mesh
+        .materials
+        .iter()
+        .chain(scene.spheres.iter().map(|s| &s.material));
+    for &m in ids {
+        if let Some(u) = used.get_mut(m as usize) {
+            *u = true;
+        }
+    }
+    used
+}
+
+/// A hit prepared for shading: the frame with the shading normal turned
+/// towards the viewer (surfaces are two-sided), the outgoing direction in
+/// that frame, the BSDF and the emitted radiance.
+#[derive(Clone, Copy, Debug)]
+pub struct ShadingPoint {
+    pub hit: Hit,
+    /// Local frame, +Z the shading normal on the viewer's side.
+    pub frame: Frame,
+    /// Direction towards the viewer, local frame.
+    pub wo: Vec3,
+    pub bsdf: Bsdf,
+    /// Whether the BSDF is a diffuse stand-in for a later part's material.
+    pub stand_in: bool,
+    /// Radiance emitted towards the viewer.
+    pub emission: Rgb,
+}
+
+impl ShadingPoint {
+    /// Prepares `hit` seen from the unit direction `wo` (world space).
+    pub fn new(hit: Hit, wo: Vec3, material: &Material) -> Self {
+        let n = if hit.n.dot(wo) < 0.0 { -hit.n } else { hit.n };
+        let frame = Frame::from_z(n);
+        let (bsdf, stand_in) = Bsdf::for_material(material);
+        ShadingPoint {
+            hit,
+            frame,
+            wo: frame.to_local(wo),
+            bsdf,
+            stand_in,
+            emission: material.emission(),
+        }
+    }
+}
+
+/// Light that reaches the camera straight from an emitter: the emission
+/// of the first surface the camera ray hits.
+#[doc(alias = "zero_bounce_radiance")]
+pub fn zero_bounce(point: &ShadingPoint) -> Rgb {
+    point.emission
+}
