@@ -102,12 +102,12 @@ fn exr_output_holds_linear_radiance() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("n.exr");
     let (ok, _, stderr) = run(
-        PATHTRACER,
+        BINARIES[1],
         &["-r", "48", "36", "-f", path.to_str().unwrap()],
     );
     assert!(ok, "{stderr}");
     let image = image::open(&path).unwrap().to_rgb32f();
-    // Normal shading: every channel is (n + 1) / 2 in [0, 1], untouched by tone mapping.
+    // part1-raygen shades normals: every channel is (n + 1) / 2 in [0, 1], untouched by tone mapping.
     assert!(image
         .pixels()
         .all(|p| p.0.iter().all(|&c| (0.0..=1.0).contains(&c))));
