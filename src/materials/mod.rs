@@ -36,7 +36,9 @@ impl Bsdf {
     pub fn for_material(material: &Material) -> (Bsdf, bool) {
         let diffuse = |albedo| Bsdf::Diffuse(Diffuse { albedo });
         match *material {
-            Material::Diffuse { albedo } => (diffuse(albedo), false),
+            Material::Diffuse { albedo } | Material::EmissiveDiffuse { albedo, .. } => {
+                (diffuse(albedo), false)
+            }
             Material::Emission { .. } => (diffuse(Rgb::ZERO), false),
             Material::Mirror { reflectance } => (diffuse(reflectance), true),
             Material::Glass { transmittance, .. } | Material::Refraction { transmittance, .. } => {

@@ -65,6 +65,10 @@ pub enum Material {
     Diffuse { albedo: Rgb },
     /// Emits `radiance` from both sides, reflects nothing.
     Emission { radiance: Rgb },
+    /// Lambertian reflection that also emits `radiance` from both sides.
+    /// The course has no such material; test scenes use it for the
+    /// furnace (a closed box whose walls reflect and glow).
+    EmissiveDiffuse { albedo: Rgb, radiance: Rgb },
     /// Perfect specular reflection scaled by `reflectance`.
     Mirror { reflectance: Rgb },
     /// Fresnel-weighted choice of reflection and refraction.
@@ -95,6 +99,7 @@ impl Material {
         match self {
             Material::Diffuse { .. } => "diffuse",
             Material::Emission { .. } => "emission",
+            Material::EmissiveDiffuse { .. } => "emissive diffuse",
             Material::Mirror { .. } => "mirror",
             Material::Glass { .. } => "glass",
             Material::Refraction { .. } => "refraction",
@@ -105,7 +110,9 @@ impl Material {
     /// Radiance emitted by a surface of this material (zero unless emissive).
     pub fn emission(&self) -> Rgb {
         match self {
-            Material::Emission { radiance } => *radiance,
+            Material::Emission { radiance } | Material::EmissiveDiffuse { radiance, .. } => {
+                *radiance
+            }
             _ => Rgb::ZERO,
         }
     }
