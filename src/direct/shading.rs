@@ -174,3 +174,37 @@ impl ShadingPoint {
 pub fn zero_bounce(point: &ShadingPoint) -> Rgb {
     point.emission
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::builtin::cornell_box;
+
+    #[test]
+    fn the_cornell_box_light_quad_stands_in_for_its_area_light() {
+        let scene = cornell_box();
+        let proxies = light_proxies(&scene);
+        let emissive: Vec<bool> = scene
+            .materials
+            .iter()
+            .map(|m| matches!(m, Material::Emission { .. }))
+            .collect();
+        assert_eq!(proxies, emissive, "exactly the emissive quad is a stand-in");
+        assert!(proxies.iter().any(|&p| p));
+    }
+
+    #[test]
+    fn an_emitter_without_a_matching_light_is_not_a_stand_in() {
+        let mut scene = cornell_box();
+        // A different radiance, or no area light at all: the quad lights the scene itself.
+        if let Light::Area { radiance, .. } = &mut scene.lights[0] {
+            *radiance *= 2.0;
+        }
+        assert!(light_proxies(&scene).iter().all(|&p| !p));
+        scene.lights.clear();
+        assert!(light_proxies(&scene).iter().all(|&p| !p));
+        let nothing = crate::intersect::Primitives::default();
+        let accel = crate::intersect::LinearScan::new(&nothing);
+        assert!(SceneTracer::new(&scene, accel).has_uncovered_emitters);
+    }
+}

@@ -68,10 +68,11 @@ fn report_render(rendered: &Rendered) {
         stats.threads,
         si(rendered.samples() as f64 / stats.seconds)
     );
-    let rejected = rendered.rejected();
-    if rejected > 0 {
-        eprintln!("warning: {rejected} samples were NaN or infinite and were left out");
-    }
+    println!(
+        "samples: {} camera rays, {} rejected (NaN or infinite radiance, left out of the mean)",
+        rendered.samples(),
+        rendered.rejected()
+    );
 }
 
 /// Writes the film where `-f` (or the default) says and tells where.
