@@ -11,7 +11,7 @@ use common::MINIMAL;
 const FILE: &str = "minimal.dae";
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(512))]
+    #![proptest_config(common::cases(512))]
 
     /// Any prefix of a valid file loads or fails cleanly.
     #[test]

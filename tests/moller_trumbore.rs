@@ -26,6 +26,10 @@ proptest! {
         let aim = at_barycentric(&tri, u, v);
         prop_assume!((aim - origin).length() > 0.1);
         let ray = Ray::new(origin, (aim - origin).normalize());
+        // Both tests lose accuracy in t as 1 / cos at grazing angles (the
+        // plane crossing is ill-conditioned there); compare where it is not.
+        let normal = (tri[1] - tri[0]).cross(tri[2] - tri[0]).normalize();
+        prop_assume!(ray.dir.dot(normal).abs() > 0.05);
         let shape = TriangleShape::new(tri[0], tri[1], tri[2]);
         let mt = moller_trumbore(&shape, &ray, f32::INFINITY);
         let wt = shape.intersect(&ray, f32::INFINITY);

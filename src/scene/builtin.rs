@@ -15,7 +15,8 @@ pub const CORNELL_BOX: &str = "built-in: cornell-box";
 /// scenes: a box `[-1, 1] x [0, 1.5] x [-1, 1]` open towards +Z, red wall
 /// at -X, blue wall at +X, a 0.6 x 0.8 area light of radiance 10 under the
 /// ceiling (and an emissive quad in the same place, as the course files
-/// have), a diffuse sphere and a mirror sphere of radius 0.3.
+/// have), and two diffuse spheres of radius 0.3, one white, one pale
+/// yellow. (The mirror and glass of assignment 3-2 will replace them.)
 pub fn cornell_box() -> Scene {
     let mut builder = MeshBuilder::default();
     let white = builder.material(Material::Diffuse {
@@ -30,8 +31,8 @@ pub fn cornell_box() -> Scene {
     let light = builder.material(Material::Emission {
         radiance: Vec3::splat(10.0),
     });
-    let mirror = builder.material(Material::Mirror {
-        reflectance: Vec3::ONE,
+    let yellow = builder.material(Material::Diffuse {
+        albedo: Vec3::new(0.7, 0.65, 0.3),
     });
     let (x0, x1, y0, y1, z0, z1) = (-1.0, 1.0, 0.0, 1.5, -1.0, 1.0);
     let corner = |x, y, z| Vec3::new(x, y, z);
@@ -96,7 +97,7 @@ pub fn cornell_box() -> Scene {
         Sphere {
             center: Vec3::new(-0.45, 0.3, -0.35),
             radius: 0.3,
-            material: mirror,
+            material: yellow,
         },
         Sphere {
             center: Vec3::new(0.45, 0.3, 0.25),
