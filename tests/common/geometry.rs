@@ -178,7 +178,7 @@ pub fn cases(cases: u32) -> ProptestConfig {
         max_global_rejects: 1_000_000,
         // The same cases on every run (and every machine), so a failure is
         // reproducible and CI cannot fail by chance on a new draw.
-        rng_seed: proptest::test_runner::RngSeed::Fixed(0x5eed_184),
+        rng_seed: proptest::test_runner::RngSeed::Fixed(184),
         ..ProptestConfig::default()
     }
 }
