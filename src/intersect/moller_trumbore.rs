@@ -20,7 +20,7 @@
 //! different expressions, each rounded its own way, and a ray through the
 //! edge can be "outside" both. The renderer therefore intersects triangles
 //! with the watertight test of [`super::triangle`], which agrees with this
-//! one everywhere else (`tests/intersect.rs` checks both, and shows a ray
+//! one everywhere else (`tests/moller_trumbore.rs` checks both, and shows a ray
 //! slipping through a mesh with this one).
 
 use super::triangle::{TriangleHit, TriangleShape};

@@ -59,6 +59,16 @@ pub fn soup(triangles: &[[Vec3; 3]], spheres: &[(Vec3, f32)]) -> Primitives {
     Primitives::from_scene(&soup_scene(triangles, spheres))
 }
 
+/// The packed primitives of one triangle.
+pub fn one_triangle(tri: [Vec3; 3]) -> Primitives {
+    soup(&[tri], &[])
+}
+
+/// The packed primitives of one sphere.
+pub fn one_sphere(center: Vec3, radius: f32) -> Primitives {
+    soup(&[], &[(center, radius)])
+}
+
 /// The closest hit by a linear scan.
 pub fn linear_hit(primitives: &Primitives, ray: &Ray) -> Option<Hit> {
     LinearScan::new(primitives).intersect(ray)
@@ -93,6 +103,18 @@ pub fn assert_sane_hit(hit: &Hit, ray: &Ray) {
     );
     assert!(is_unit(hit.n), "shading normal not unit: {hit:?}");
     assert!(is_unit(hit.ng), "geometric normal not unit: {hit:?}");
+}
+
+/// The hit lies on the sphere within its error bound, and its normals are
+/// the outward radial direction.
+pub fn assert_on_sphere(hit: &Hit, center: Vec3, radius: f32) {
+    let radial = hit.p.as_dvec3() - center.as_dvec3();
+    let off = (radial.length() - f64::from(radius)).abs();
+    let bound = hit.p_error.as_dvec3().length();
+    assert!(off <= bound, "off the sphere by {off} > {bound}: {hit:?}");
+    let outward = radial.normalize();
+    assert!(hit.ng.as_dvec3().dot(outward) > 1.0 - 1e-5, "{hit:?}");
+    assert_eq!(hit.n, hit.ng);
 }
 
 /// A uniformly distributed unit vector from two numbers in `[0, 1)`.

@@ -3,7 +3,9 @@
 #![allow(dead_code, unused_imports)]
 
 pub mod collada;
+pub mod exact;
 pub mod geometry;
 
 pub use collada::*;
+pub use exact::*;
 pub use geometry::*;
