@@ -93,3 +93,27 @@ pub fn estimate_pixel(
     estimate.variance_of_mean = stats.variance_of_mean();
     estimate
 }
+
+/// Renders an image: every pixel estimated by [`estimate_pixel`] from
+/// `radiance`, up to `settings.samples_per_pixel` camera rays each,
+/// stopping early where `adaptive` says so, on tiles in parallel.
+pub fn render_image(
+    camera: &Camera,
+    settings: &RenderSettings,
+    adaptive: Option<Adaptive>,
+    radiance: impl Fn(&Ray, &mut Sampler) -> Rgb + Sync,
+) -> Rendered {
+    let size = (settings.width, settings.height);
+    let (estimates, stats) = render_tiles(settings, |x, y, rng| {
+        estimate_pixel(
+            camera,
+            size,
+            (x, y),
+            settings.samples_per_pixel,
+            adaptive,
+            rng,
+            &radiance,
+        )
+    });
+    Rendered::new(settings.width, settings.height, estimates, stats)
+}

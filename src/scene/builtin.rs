@@ -35,63 +35,42 @@ pub fn cornell_box() -> Scene {
         albedo: Vec3::new(0.7, 0.65, 0.3),
     });
     let (x0, x1, y0, y1, z0, z1) = (-1.0, 1.0, 0.0, 1.5, -1.0, 1.0);
-    let corner = |x, y, z| Vec3::new(x, y, z);
-    // Each quad's corners are counter-clockwise seen from inside the box.
-    builder.quad(
-        white,
-        [
-            corner(x0, y0, z1),
-            corner(x1, y0, z1),
-            corner(x1, y0, z0),
-            corner(x0, y0, z0),
-        ],
-    );
-    builder.quad(
-        white,
-        [
-            corner(x0, y1, z0),
-            corner(x1, y1, z0),
-            corner(x1, y1, z1),
-            corner(x0, y1, z1),
-        ],
-    );
-    builder.quad(
-        white,
-        [
-            corner(x0, y0, z0),
-            corner(x1, y0, z0),
-            corner(x1, y1, z0),
-            corner(x0, y1, z0),
-        ],
-    );
-    builder.quad(
-        red,
-        [
-            corner(x0, y0, z1),
-            corner(x0, y0, z0),
-            corner(x0, y1, z0),
-            corner(x0, y1, z1),
-        ],
-    );
-    builder.quad(
-        blue,
-        [
-            corner(x1, y0, z0),
-            corner(x1, y0, z1),
-            corner(x1, y1, z1),
-            corner(x1, y1, z0),
-        ],
-    );
     let ly = 1.49;
-    builder.quad(
-        light,
-        [
-            corner(-0.3, ly, -0.4),
-            corner(0.3, ly, -0.4),
-            corner(0.3, ly, 0.4),
-            corner(-0.3, ly, 0.4),
-        ],
-    );
+    // Each quad's corners run counter-clockwise seen from inside the box.
+    let quads = [
+        (
+            white,
+            [(x0, y0, z1), (x1, y0, z1), (x1, y0, z0), (x0, y0, z0)],
+        ), // floor
+        (
+            white,
+            [(x0, y1, z0), (x1, y1, z0), (x1, y1, z1), (x0, y1, z1)],
+        ), // ceiling
+        (
+            white,
+            [(x0, y0, z0), (x1, y0, z0), (x1, y1, z0), (x0, y1, z0)],
+        ), // back
+        (
+            red,
+            [(x0, y0, z1), (x0, y0, z0), (x0, y1, z0), (x0, y1, z1)],
+        ), // left
+        (
+            blue,
+            [(x1, y0, z0), (x1, y0, z1), (x1, y1, z1), (x1, y1, z0)],
+        ), // right
+        (
+            light,
+            [
+                (-0.3, ly, -0.4),
+                (0.3, ly, -0.4),
+                (0.3, ly, 0.4),
+                (-0.3, ly, 0.4),
+            ],
+        ),
+    ];
+    for (material, corners) in quads {
+        builder.quad(material, corners.map(|(x, y, z)| Vec3::new(x, y, z)));
+    }
     let mut scene = builder.finish(CORNELL_BOX);
     scene.spheres = vec![
         Sphere {

@@ -8,7 +8,7 @@ use crate::bvh::BvhAccel;
 use crate::cli::CourseArgs;
 use crate::intersect::{Intersector, LinearScan, Ray};
 use crate::raygen::{Camera, NormalShading};
-use crate::render::{estimate_pixel, pixel_ray, render_tiles, RenderSettings, Rendered};
+use crate::render::{pixel_ray, render_image, RenderSettings, Rendered};
 
 /// Renders normal shading through `intersector`.
 pub fn render_normals(
@@ -17,19 +17,7 @@ pub fn render_normals(
     settings: &RenderSettings,
 ) -> Rendered {
     let shading = NormalShading { intersector };
-    let size = (settings.width, settings.height);
-    let (estimates, stats) = render_tiles(settings, |x, y, rng| {
-        estimate_pixel(
-            camera,
-            size,
-            (x, y),
-            settings.samples_per_pixel,
-            None,
-            rng,
-            |ray, _| shading.radiance(ray),
-        )
-    });
-    Rendered::new(settings.width, settings.height, estimates, stats)
+    render_image(camera, settings, None, |ray, _| shading.radiance(ray))
 }
 
 /// `part1-raygen`: normal shading, testing every primitive for every ray.

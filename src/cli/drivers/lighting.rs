@@ -12,7 +12,7 @@ use crate::global::{DirectStrategy, PathTracer};
 use crate::intersect::Intersector;
 use crate::raygen::Camera;
 use crate::render::rendered::rate_image_path;
-use crate::render::{estimate_pixel, render_tiles, RenderSettings, Rendered};
+use crate::render::{render_image, RenderSettings, Rendered};
 use crate::scene::Scene;
 
 /// Renders `tracer`'s radiance estimate for every pixel, up to `-s`
@@ -24,19 +24,9 @@ pub fn render_lighting<I: Intersector>(
     settings: &RenderSettings,
     adaptive: Option<Adaptive>,
 ) -> Rendered {
-    let size = (settings.width, settings.height);
-    let (estimates, stats) = render_tiles(settings, |x, y, rng| {
-        estimate_pixel(
-            camera,
-            size,
-            (x, y),
-            settings.samples_per_pixel,
-            adaptive,
-            rng,
-            |ray, rng| tracer.radiance(scene, ray, rng),
-        )
-    });
-    Rendered::new(settings.width, settings.height, estimates, stats)
+    render_image(camera, settings, adaptive, |ray, rng| {
+        tracer.radiance(scene, ray, rng)
+    })
 }
 
 /// The direct-lighting strategy the flags ask for: `-H` for hemisphere
