@@ -4,6 +4,10 @@
 
 pub mod collada;
 pub mod geometry;
+pub mod scenes;
+pub mod stats;
 
 pub use collada::*;
 pub use geometry::*;
+pub use scenes::*;
+pub use stats::*;
