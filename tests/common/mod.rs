@@ -5,7 +5,11 @@
 pub mod collada;
 pub mod exact;
 pub mod geometry;
+pub mod scenes;
+pub mod stats;
 
 pub use collada::*;
 pub use exact::*;
 pub use geometry::*;
+pub use scenes::*;
+pub use stats::*;

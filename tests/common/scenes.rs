@@ -1,0 +1,136 @@
+//! Small scenes built in code for the estimator tests, and the plumbing
+//! to average a path tracer's radiance along one ray.
+
+use glam::Vec3;
+use pathtracer::direct::SceneTracer;
+use pathtracer::global::PathTracer;
+use pathtracer::intersect::{Intersector, Ray};
+use pathtracer::math::luminance;
+use pathtracer::math::rng::sampler;
+use pathtracer::math::Frame;
+use pathtracer::scene::normals::area_weighted_vertex_normals;
+use pathtracer::scene::{Light, Material, MaterialId, Scene, Sphere};
+
+use super::stats::MeanEstimate;
+
+/// Builds a [`Scene`]: quads with their own vertices (so flat shading
+/// normals), analytic spheres, lights.
+#[derive(Default)]
+pub struct SceneBuilder {
+    scene: Scene,
+}
+
+impl SceneBuilder {
+    pub fn new() -> Self {
+        let mut b = SceneBuilder::default();
+        b.scene.source = "test: built in code".into();
+        b
+    }
+
+    pub fn material(&mut self, material: Material) -> MaterialId {
+        self.scene.materials.push(material);
+        (self.scene.materials.len() - 1) as MaterialId
+    }
+
+    /// A planar quad `a b c d` (two triangles, either winding: surfaces are two-sided).
+    pub fn quad(&mut self, material: MaterialId, corners: [Vec3; 4]) -> &mut Self {
+        let mesh = &mut self.scene.mesh;
+        let base = mesh.positions.len() as u32;
+        mesh.positions.extend(corners);
+        for tri in [[0, 1, 2], [0, 2, 3]] {
+            mesh.triangles.push(tri.map(|i| base + i));
+            mesh.materials.push(material);
+        }
+        self
+    }
+
+    /// The six faces of the axis-aligned box `[lo, hi]` (12 triangles).
+    pub fn closed_box(&mut self, material: MaterialId, lo: Vec3, hi: Vec3) -> &mut Self {
+        let c = |x: bool, y: bool, z: bool| {
+            Vec3::new(
+                if x { hi.x } else { lo.x },
+                if y { hi.y } else { lo.y },
+                if z { hi.z } else { lo.z },
+            )
+        };
+        let (f, t) = (false, true);
+        self.quad(material, [c(f, f, f), c(t, f, f), c(t, f, t), c(f, f, t)]);
+        self.quad(material, [c(f, t, f), c(f, t, t), c(t, t, t), c(t, t, f)]);
+        self.quad(material, [c(f, f, f), c(f, t, f), c(t, t, f), c(t, f, f)]);
+        self.quad(material, [c(f, f, t), c(t, f, t), c(t, t, t), c(f, t, t)]);
+        self.quad(material, [c(f, f, f), c(f, f, t), c(f, t, t), c(f, t, f)]);
+        self.quad(material, [c(t, f, f), c(t, t, f), c(t, t, t), c(t, f, t)])
+    }
+
+    pub fn sphere(&mut self, center: Vec3, radius: f32, material: MaterialId) -> &mut Self {
+        self.scene.spheres.push(Sphere {
+            center,
+            radius,
+            material,
+        });
+        self
+    }
+
+    pub fn light(&mut self, light: Light) -> &mut Self {
+        self.scene.lights.push(light);
+        self
+    }
+
+    pub fn finish(mut self) -> Scene {
+        let mesh = &mut self.scene.mesh;
+        mesh.normals = area_weighted_vertex_normals(&mesh.positions, &mesh.triangles);
+        self.scene
+    }
+}
+
+/// A rectangular area light of `radiance` centred at `center`, facing
+/// `facing` (normalised here), with sides `sx` and `sy`.
+pub fn rect_light(radiance: f32, center: Vec3, facing: Vec3, sx: f32, sy: f32) -> Light {
+    let direction = facing.normalize();
+    let frame = Frame::from_z(direction);
+    Light::Area {
+        radiance: Vec3::splat(radiance),
+        center,
+        direction,
+        dim_x: sx * frame.to_world(Vec3::X),
+        dim_y: sy * frame.to_world(Vec3::Y),
+    }
+}
+
+/// The corners of an area light, in order around it.
+pub fn rect_corners(light: &Light) -> [Vec3; 4] {
+    let Light::Area {
+        center,
+        dim_x,
+        dim_y,
+        ..
+    } = *light
+    else {
+        panic!("not an area light: {light:?}");
+    };
+    [(-0.5, -0.5), (0.5, -0.5), (0.5, 0.5), (-0.5, 0.5)]
+        .map(|(s, t)| center + s * dim_x + t * dim_y)
+}
+
+/// The ray from `origin` towards `target`.
+pub fn ray_towards(origin: Vec3, target: Vec3) -> Ray {
+    Ray::new(origin, (target - origin).normalize())
+}
+
+/// The luminance of `n` independent radiance estimates along `ray`
+/// (one random stream per call, seeded by `seed`): their mean and its
+/// standard error. Panics on a non-finite sample.
+pub fn estimate<I: Intersector>(
+    scene: &SceneTracer<I>,
+    tracer: &PathTracer,
+    ray: &Ray,
+    n: usize,
+    seed: u64,
+) -> MeanEstimate {
+    let mut rng = sampler(seed, 0);
+    MeanEstimate::of((0..n).map(|_| {
+        let l = tracer.radiance(scene, ray, &mut rng);
+        assert!(l.is_finite(), "non-finite radiance {l}");
+        luminance(l) as f64
+    }))
+}
