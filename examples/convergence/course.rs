@@ -10,7 +10,7 @@
 
 use pathtracer::bvh::BvhAccel;
 use pathtracer::direct::lights::{sample_light, LightPdf};
-use pathtracer::direct::{SceneTracer, ShadingPoint};
+use pathtracer::direct::{DirectLights, SceneTracer, ShadingPoint};
 use pathtracer::intersect::Intersector;
 use pathtracer::math::rng::{next_2d, Sampler};
 use pathtracer::math::Rgb;
@@ -71,9 +71,10 @@ fn course_direct(
     total
 }
 
-/// The course's direct lighting alone (part 3 less the emission the
-/// camera sees, which both share).
-pub fn render_course_direct(setup: &Setup, spp: u32, samples_per_light: u32) -> Rendered {
+/// Direct lighting from the scene's lights alone (part 3 less the
+/// emission the camera sees, which both share): the library's
+/// `DirectLights`, or with `course` the course's factors.
+pub fn render_direct(setup: &Setup, spp: u32, samples_per_light: u32, course: bool) -> Rendered {
     let scene = SceneTracer::new(&setup.scene, &setup.accel);
     let settings = setup.settings(spp, 1);
     let size = (setup.width, setup.height);
@@ -86,7 +87,8 @@ pub fn render_course_direct(setup: &Setup, spp: u32, samples_per_light: u32) -> 
             None,
             rng,
             |ray, rng| match scene.trace(ray) {
-                Some(point) => course_direct(&scene, &point, samples_per_light, rng),
+                Some(point) if course => course_direct(&scene, &point, samples_per_light, rng),
+                Some(point) => DirectLights { samples_per_light }.estimate(&scene, &point, rng),
                 None => Rgb::ZERO,
             },
         )
