@@ -29,7 +29,8 @@ fn course_factor(light: &Light, r: f32) -> f32 {
     }
 }
 
-/// [`pathtracer::direct::DirectLights`] with the course's factors.
+/// [`pathtracer::direct::DirectLights`] with the course's factors: its
+/// loop repeated on purpose, so the library keeps no hook for a wrong pdf.
 fn course_direct(
     scene: &SceneTracer<&BvhAccel>,
     point: &ShadingPoint,
