@@ -1,0 +1,323 @@
+//! Scenes, renders and the error measure of the convergence studies.
+//!
+//! A study renders a scene at a small size (160 x 120 by default) with the
+//! camera the course would place for a 480 x 360 image, so the small image
+//! shows the whole Cornell box (the course's field of view follows the
+//! output size: a 160 x 120 render would crop the view, see
+//! docs/01-raygen.md).
+//!
+//! Error of an image `Y` (pixel luminances) against a reference `R`
+//! rendered once per study with many samples and another seed, over the
+//! `P` pixels that show no emitter:
+//!
+//! ```text
+//! e = sqrt( 1/P sum_i (Y_i - R_i)^2  -  1/P sum_i SE_R,i^2 ) / (1/P sum_i R_i)
+//! ```
+//!
+//! Pixels where any of 8 x 8 sub-pixel rays hits an emissive surface are
+//! left out: the edge of a light ten times brighter than the walls makes
+//! their variance (the camera's sampling of the pixel area, the same for
+//! every lighting estimator) outweigh the rest of the image.
+//!
+//! `E (Y_i - R_i)^2 = Var Y_i + Var R_i + bias_i^2` for independent
+//! renders, so subtracting the reference's own squared standard errors
+//! `SE_R,i^2` (which it estimates) leaves the error of `Y` alone, as if the
+//! reference were exact.
+
+use std::error::Error;
+use std::path::{Path, PathBuf};
+
+use glam::Vec2;
+use pathtracer::adaptive::Adaptive;
+use pathtracer::bvh::BvhAccel;
+use pathtracer::cli::drivers::render_lighting;
+use pathtracer::direct::SceneTracer;
+use pathtracer::global::PathTracer;
+use pathtracer::intersect::Primitives;
+use pathtracer::math::luminance;
+use pathtracer::raygen::Camera;
+use pathtracer::render::{pixel_ray, RenderSettings, Rendered};
+use pathtracer::scene::Scene;
+
+/// Seed of every reference render; test renders use small seeds.
+pub const REFERENCE_SEED: u64 = 0x5EED_0000_0000;
+
+/// A loaded scene, its BVH and the camera of a study.
+pub struct Setup {
+    pub name: String,
+    pub scene: Scene,
+    pub accel: BvhAccel,
+    pub camera: Camera,
+    pub width: u32,
+    pub height: u32,
+    pub threads: Option<usize>,
+}
+
+impl Setup {
+    /// Loads `dir/file`, framed as the course frames a 480 x 360 render,
+    /// rendered at `width` x `height`.
+    pub fn load(
+        dir: &Path,
+        file: &str,
+        (width, height): (u32, u32),
+        threads: Option<usize>,
+    ) -> Result<Self, Box<dyn Error>> {
+        let path: PathBuf = dir.join(file);
+        let scene = pathtracer::scene::load(&path)?;
+        let primitives = Primitives::from_scene(&scene);
+        let camera = Camera::course_placement(&scene.camera, &primitives.bounds(), 480, 360);
+        Ok(Setup {
+            name: file.to_string(),
+            scene,
+            accel: BvhAccel::new(primitives),
+            camera,
+            width,
+            height,
+            threads,
+        })
+    }
+
+    /// Per pixel, whether none of 8 x 8 sub-pixel rays sees an emitter.
+    pub fn emitter_free_pixels(&self) -> Vec<bool> {
+        let scene = SceneTracer::new(&self.scene, &self.accel);
+        let (w, h) = (self.width, self.height);
+        let sees_emitter = |x, y| {
+            (0..64).any(|k| {
+                let offset = Vec2::new((k % 8) as f32 + 0.5, (k / 8) as f32 + 0.5) / 8.0;
+                let ray = pixel_ray(&self.camera, w, h, x, y, offset);
+                scene
+                    .trace(&ray)
+                    .is_some_and(|p| p.emission != pathtracer::math::Rgb::ZERO)
+            })
+        };
+        (0..h)
+            .flat_map(|y| (0..w).map(move |x| (x, y)))
+            .map(|(x, y)| !sees_emitter(x, y))
+            .collect()
+    }
+
+    pub fn settings(&self, samples_per_pixel: u32, seed: u64) -> RenderSettings {
+        RenderSettings {
+            width: self.width,
+            height: self.height,
+            samples_per_pixel,
+            threads: self.threads,
+            seed,
+            progress: false,
+        }
+    }
+
+    /// Renders with the library's own pixel loop (what the binaries run).
+    pub fn render(
+        &self,
+        tracer: &PathTracer,
+        samples_per_pixel: u32,
+        adaptive: Option<Adaptive>,
+        seed: u64,
+    ) -> Rendered {
+        let scene = SceneTracer::new(&self.scene, &self.accel);
+        let settings = self.settings(samples_per_pixel, seed);
+        render_lighting(&scene, tracer, &self.camera, &settings, adaptive)
+    }
+
+    /// The study's reference: `samples_per_pixel` samples, its own seed.
+    pub fn reference(&self, tracer: &PathTracer, samples_per_pixel: u32) -> Reference {
+        let rendered = self.render(tracer, samples_per_pixel, None, REFERENCE_SEED);
+        let reference = Reference::new(&rendered, self.emitter_free_pixels());
+        eprintln!(
+            "reference {}: {} spp, {:.1} s, {} of {} pixels see no emitter, mean luminance {:.4}, own relative error {:.3} %",
+            self.name,
+            samples_per_pixel,
+            reference.seconds,
+            reference.mask.iter().filter(|&&m| m).count(),
+            reference.mask.len(),
+            reference.mean,
+            100.0 * reference.own_error(&rendered)
+        );
+        reference
+    }
+}
+
+/// Pixel luminances of a reference render and their squared standard
+/// errors, and which pixels the error is measured over.
+pub struct Reference {
+    pub luminance: Vec<f64>,
+    pub variance_of_mean: Vec<f64>,
+    pub mask: Vec<bool>,
+    /// Mean luminance over the masked pixels.
+    pub mean: f64,
+    pub seconds: f64,
+}
+
+impl Reference {
+    pub fn new(rendered: &Rendered, mask: Vec<bool>) -> Self {
+        let luminance = pixel_luminance(rendered);
+        Reference {
+            mean: masked_mean(&luminance, &mask),
+            variance_of_mean: rendered
+                .estimates
+                .iter()
+                .map(|e| e.variance_of_mean)
+                .collect(),
+            luminance,
+            mask,
+            seconds: rendered.stats.seconds,
+        }
+    }
+
+    /// RMS luminance error of `rendered` against this reference, less the
+    /// reference's own noise, relative to the reference's mean luminance.
+    pub fn relative_rms_error(&self, rendered: &Rendered) -> f64 {
+        let y = pixel_luminance(rendered);
+        self.rms_difference(&y, &self.variance_of_mean)
+    }
+
+    /// RMS difference of two references less both one's noise, relative
+    /// to this one's mean luminance: how far apart their limits are.
+    pub fn relative_rms_difference(&self, other: &Reference) -> f64 {
+        let noise: Vec<f64> = self
+            .variance_of_mean
+            .iter()
+            .zip(&other.variance_of_mean)
+            .map(|(a, b)| a + b)
+            .collect();
+        self.rms_difference(&other.luminance, &noise)
+    }
+
+    fn rms_difference(&self, y: &[f64], noise: &[f64]) -> f64 {
+        let squared: Vec<f64> = y
+            .iter()
+            .zip(&self.luminance)
+            .map(|(a, b)| (a - b) * (a - b))
+            .collect();
+        let mse = masked_mean(&squared, &self.mask) - masked_mean(noise, &self.mask);
+        mse.max(0.0).sqrt() / self.mean
+    }
+
+    /// RMS of the pixels' relative errors `(Y_i - R_i) / R_i`, less the
+    /// reference's noise, over the masked pixels with `R_i` above 1 % of
+    /// the mean: the measure the adaptive test aims at (every pixel to a
+    /// given fraction of its own mean).
+    pub fn rms_pixel_relative_error(&self, rendered: &Rendered) -> f64 {
+        let y = pixel_luminance(rendered);
+        let (mut sum, mut noise, mut n) = (0.0, 0.0, 0usize);
+        let pixels = y
+            .iter()
+            .zip(&self.luminance)
+            .zip(&self.variance_of_mean)
+            .zip(&self.mask);
+        for (((&y, &r), &v), &m) in pixels {
+            if m && r > 0.01 * self.mean {
+                sum += (y - r) * (y - r) / (r * r);
+                noise += v / (r * r);
+                n += 1;
+            }
+        }
+        ((sum - noise) / n.max(1) as f64).max(0.0).sqrt()
+    }
+
+    /// The render's own estimate of its relative error over the same
+    /// pixels: `Rendered::relative_error`'s formula (RMS of the pixels'
+    /// standard errors over their mean luminance) restricted to the mask.
+    pub fn own_error(&self, rendered: &Rendered) -> f64 {
+        let variance: Vec<f64> = rendered
+            .estimates
+            .iter()
+            .map(|e| e.variance_of_mean)
+            .collect();
+        masked_mean(&variance, &self.mask).sqrt()
+            / masked_mean(&pixel_luminance(rendered), &self.mask)
+    }
+
+    /// Mean luminance of `rendered` over the mask, over the reference's.
+    pub fn brightness(&self, rendered: &Rendered) -> f64 {
+        masked_mean(&pixel_luminance(rendered), &self.mask) / self.mean
+    }
+}
+
+pub fn masked_mean(values: &[f64], mask: &[bool]) -> f64 {
+    let (sum, n) = values
+        .iter()
+        .zip(mask)
+        .filter(|(_, &m)| m)
+        .fold((0.0, 0usize), |(s, n), (v, _)| (s + v, n + 1));
+    sum / n.max(1) as f64
+}
+
+pub fn pixel_luminance(rendered: &Rendered) -> Vec<f64> {
+    rendered
+        .film
+        .pixels
+        .iter()
+        .map(|&l| luminance(l) as f64)
+        .collect()
+}
+
+pub fn mean(values: &[f64]) -> f64 {
+    values.iter().sum::<f64>() / values.len().max(1) as f64
+}
+
+/// One render of a study, measured.
+#[derive(Clone, Debug)]
+pub struct Measurement {
+    pub label: String,
+    /// `-s`: the maximum with adaptive sampling.
+    pub samples_per_pixel: u32,
+    pub mean_samples_per_pixel: f64,
+    /// Wall-clock seconds of the render.
+    pub seconds: f64,
+    /// Relative RMS error against the reference.
+    pub error: f64,
+    /// RMS of the pixels' relative errors against the reference.
+    pub pixel_error: f64,
+    /// The estimator's own estimate of its relative standard error.
+    pub own_error: Option<f64>,
+    /// Mean luminance relative to the reference's.
+    pub brightness: f64,
+}
+
+impl Measurement {
+    pub fn new(label: &str, spp: u32, rendered: &Rendered, reference: &Reference) -> Self {
+        let m = Measurement {
+            label: label.to_string(),
+            samples_per_pixel: spp,
+            mean_samples_per_pixel: rendered.mean_samples_per_pixel(),
+            seconds: rendered.stats.seconds,
+            error: reference.relative_rms_error(rendered),
+            pixel_error: reference.rms_pixel_relative_error(rendered),
+            own_error: (rendered.samples() > rendered.estimates.len() as u64)
+                .then(|| reference.own_error(rendered)),
+            brightness: reference.brightness(rendered),
+        };
+        eprintln!("  {}", m.row());
+        m
+    }
+
+    /// A row of the Markdown table printed by [`table`].
+    pub fn row(&self) -> String {
+        let own = self
+            .own_error
+            .map_or("–".to_string(), |e| format!("{:.2} %", 100.0 * e));
+        format!(
+            "| {} | {} | {:.1} | {:.3} | {:.2} % | {} | {:.4} | {:.2} % |",
+            self.label,
+            self.samples_per_pixel,
+            self.mean_samples_per_pixel,
+            self.seconds,
+            100.0 * self.error,
+            own,
+            self.brightness,
+            100.0 * self.pixel_error
+        )
+    }
+}
+
+/// Prints a study's measurements as a Markdown table on stdout.
+pub fn table(title: &str, rows: &[Measurement]) {
+    println!("\n{title}\n");
+    println!("| render | -s | mean spp | seconds | RMS error vs reference | own relative SE | mean luminance / reference | RMS pixel relative error |");
+    println!("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
+    for m in rows {
+        println!("{}", m.row());
+    }
+}

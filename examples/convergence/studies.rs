@@ -1,0 +1,356 @@
+//! The studies: each renders a reference once, then a series of renders,
+//! and writes one chart (PNG) and one Markdown table (stdout).
+
+use std::error::Error;
+use std::path::PathBuf;
+
+use pathtracer::adaptive::Adaptive;
+use pathtracer::direct::{DirectHemisphere, DirectLights};
+use pathtracer::global::{DirectStrategy, PathTracer};
+
+use crate::course::render_direct;
+use crate::measure::{mean, pixel_luminance, table, Measurement, Setup};
+use crate::plot::{line_chart, Chart, Series};
+
+type Result<T> = std::result::Result<T, Box<dyn Error>>;
+
+/// What every study needs to know.
+pub struct Options {
+    pub scenes: PathBuf,
+    pub out: PathBuf,
+    pub threads: Option<usize>,
+    pub size: (u32, u32),
+}
+
+impl Options {
+    fn setup(&self, file: &str) -> Result<Setup> {
+        Setup::load(&self.scenes, file, self.size, self.threads)
+    }
+}
+
+const SPHERES: &str = "CBspheres_lambertian.dae";
+
+fn lights(samples_per_light: u32, max_depth: u32, russian_roulette: bool) -> PathTracer {
+    PathTracer {
+        direct: DirectStrategy::Lights(DirectLights { samples_per_light }),
+        max_depth,
+        accumulate: true,
+        russian_roulette,
+    }
+}
+
+fn hemisphere(directions: u32) -> PathTracer {
+    PathTracer {
+        direct: DirectStrategy::Hemisphere(DirectHemisphere {
+            samples: directions,
+        }),
+        max_depth: 1,
+        accumulate: true,
+        russian_roulette: false,
+    }
+}
+
+/// Error against seconds, one series per group of measurements.
+fn error_vs_time(title: &str, groups: &[(&str, &[Measurement])]) -> Chart {
+    Chart {
+        title: title.to_string(),
+        x_label: "render time (s, wall clock, 2 cores)".into(),
+        y_label: "relative RMS error (%)".into(),
+        log_x: true,
+        log_y: true,
+        series: groups
+            .iter()
+            .map(|(name, ms)| {
+                Series::new(
+                    *name,
+                    ms.iter().map(|m| (m.seconds, 100.0 * m.error)).collect(),
+                )
+            })
+            .collect(),
+    }
+}
+
+/// Hemisphere sampling (`-H`) against light sampling, direct light only.
+///
+/// Each estimator is measured against its own reference: in the course's
+/// Cornell boxes the emissive mesh that `-H` finds and the area light that
+/// light sampling samples are not the same rectangle (docs/04-direct.md),
+/// so their limits differ near the ceiling; the study prints by how much.
+pub fn direct(options: &Options) -> Result<()> {
+    let setup = options.setup(SPHERES)?;
+    let light_reference = setup.reference(&lights(4, 1, false), 1024);
+    let hemi_reference = setup.reference(&hemisphere(1), 4096);
+    println!(
+        "\nlimits: hemisphere / light mean luminance {:.4}, RMS difference {:.2} %",
+        hemi_reference.mean / light_reference.mean,
+        100.0 * light_reference.relative_rms_difference(&hemi_reference)
+    );
+    let measure = |tracer: &PathTracer, reference, label: &str, spp: u32| {
+        let rendered = setup.render(tracer, spp, None, spp as u64);
+        Measurement::new(label, spp, &rendered, reference)
+    };
+    let light: Vec<_> = [4, 16, 64, 256]
+        .into_iter()
+        .map(|s| {
+            measure(
+                &lights(1, 1, false),
+                &light_reference,
+                "light sampling, -l 1",
+                s,
+            )
+        })
+        .collect();
+    let hemi: Vec<_> = [4, 16, 64, 256, 1024]
+        .into_iter()
+        .map(|s| measure(&hemisphere(1), &hemi_reference, "hemisphere, -H -l 1", s))
+        .collect();
+    table(
+        "direct: CBspheres_lambertian, direct light only",
+        &[light.clone(), hemi.clone()].concat(),
+    );
+    line_chart(
+        &error_vs_time(
+            "Direct lighting: hemisphere vs light sampling",
+            &[
+                ("light sampling (-l 1)", &light),
+                ("hemisphere (-H -l 1)", &hemi),
+            ],
+        ),
+        &options.out.join("convergence-direct.png"),
+    )
+}
+
+/// Camera rays per pixel (`-s`) against samples per light (`-l`).
+pub fn samples(options: &Options) -> Result<()> {
+    let setup = options.setup(SPHERES)?;
+    let reference = setup.reference(&lights(4, 1, false), 1024);
+    let mut groups = Vec::new();
+    for l in [1, 4, 16] {
+        let runs: Vec<_> = [2, 8, 32, 128]
+            .into_iter()
+            .map(|s| s * 4 / l)
+            .filter(|&s| s >= 2)
+            .map(|s| {
+                let rendered = setup.render(&lights(l, 1, false), s, None, s as u64);
+                Measurement::new(&format!("-s {s} -l {l}"), s, &rendered, &reference)
+            })
+            .collect();
+        groups.push((
+            if l == 1 {
+                "1 sample per light (-l 1)".to_string()
+            } else {
+                format!("{l} samples per light (-l {l})")
+            },
+            runs,
+        ));
+    }
+    let all: Vec<_> = groups.iter().flat_map(|g| g.1.clone()).collect();
+    table("samples: CBspheres_lambertian, direct light only", &all);
+    let named: Vec<(&str, &[Measurement])> = groups
+        .iter()
+        .map(|(n, r)| (n.as_str(), r.as_slice()))
+        .collect();
+    line_chart(
+        &error_vs_time(
+            "Direct lighting: camera rays (-s) vs light samples (-l)",
+            &named,
+        ),
+        &options.out.join("convergence-samples.png"),
+    )
+}
+
+/// Max depth 1..8 against the converged image, and Russian roulette on
+/// and off at depth 8.
+pub fn global(options: &Options) -> Result<()> {
+    let setup = options.setup(SPHERES)?;
+    // Depth: the converged image (RR makes 64 bounces affordable).
+    let converged = setup.reference(&lights(1, 64, true), 1024);
+    let mut accumulated = Vec::new();
+    let mut only = Vec::new();
+    for m in 1..=8 {
+        let tracer = lights(1, m, true);
+        let rendered = setup.render(&tracer, 64, None, m as u64);
+        accumulated.push(Measurement::new(
+            &format!("-m {m}"),
+            64,
+            &rendered,
+            &converged,
+        ));
+        let tracer = PathTracer {
+            accumulate: false,
+            ..tracer
+        };
+        let rendered = setup.render(&tracer, 64, None, 100 + m as u64);
+        only.push(Measurement::new(
+            &format!("-m {m} -o 0"),
+            64,
+            &rendered,
+            &converged,
+        ));
+    }
+    table(
+        "global: CBspheres_lambertian, depth against the converged image (-m 64)",
+        &[accumulated.clone(), only.clone()].concat(),
+    );
+    let by_depth = |ms: &[Measurement], f: fn(&Measurement) -> f64| {
+        ms.iter()
+            .enumerate()
+            .map(|(i, m)| ((i + 1) as f64, f(m)))
+            .collect()
+    };
+    line_chart(
+        &Chart {
+            title: "Path depth: brightness and error against the converged image".into(),
+            x_label: "max depth m".into(),
+            y_label: "fraction of the converged mean luminance / error".into(),
+            log_x: false,
+            log_y: false,
+            series: vec![
+                Series::new(
+                    "-o 1: mean luminance",
+                    by_depth(&accumulated, |m| m.brightness),
+                ),
+                Series::new("-o 0: m-th bounce only", by_depth(&only, |m| m.brightness)),
+                Series::new(
+                    "-o 1: relative RMS error",
+                    by_depth(&accumulated, |m| m.error),
+                ),
+            ],
+        },
+        &options.out.join("convergence-depth.png"),
+    )?;
+
+    // Russian roulette on and off at the same depth.
+    let depth = 8;
+    let reference = setup.reference(&lights(1, depth, true), 1024);
+    let run = |rr: bool| -> Vec<Measurement> {
+        [4, 16, 64, 256]
+            .into_iter()
+            .map(|s| {
+                let rendered = setup.render(&lights(1, depth, rr), s, None, s as u64);
+                let label = format!("-m {depth}, RR {}", if rr { "on" } else { "off" });
+                Measurement::new(&label, s, &rendered, &reference)
+            })
+            .collect()
+    };
+    let (on, off) = (run(true), run(false));
+    table(
+        "global: CBspheres_lambertian, Russian roulette at -m 8",
+        &[on.clone(), off.clone()].concat(),
+    );
+    line_chart(
+        &error_vs_time(
+            "Russian roulette on and off, max depth 8",
+            &[("RR on (q = 0.65)", &on), ("RR off", &off)],
+        ),
+        &options.out.join("convergence-roulette.png"),
+    )
+}
+
+/// Adaptive against uniform sampling: mean samples and time for an error.
+pub fn adaptive(options: &Options) -> Result<()> {
+    let setup = options.setup(SPHERES)?;
+    let tracer = lights(1, 5, true);
+    let reference = setup.reference(&tracer, 2048);
+    let uniform: Vec<_> = [16, 32, 64, 128, 256, 512]
+        .into_iter()
+        .map(|s| {
+            let rendered = setup.render(&tracer, s, None, s as u64);
+            Measurement::new("uniform", s, &rendered, &reference)
+        })
+        .collect();
+    let max = 2048;
+    let adaptive: Vec<_> = [0.4, 0.2, 0.1, 0.05]
+        .into_iter()
+        .map(|tolerance| {
+            let a = Adaptive {
+                batch: 32,
+                tolerance,
+            };
+            let rendered = setup.render(&tracer, max, Some(a), 7);
+            Measurement::new(
+                &format!("adaptive -a 32 {tolerance}"),
+                max,
+                &rendered,
+                &reference,
+            )
+        })
+        .collect();
+    table(
+        "adaptive: CBspheres_lambertian, -l 1 -m 5",
+        &[uniform.clone(), adaptive.clone()].concat(),
+    );
+    let chart = |title: &str, y_label: &str, error: fn(&Measurement) -> f64| Chart {
+        title: title.into(),
+        x_label: "mean camera rays per pixel".into(),
+        y_label: y_label.into(),
+        log_x: true,
+        log_y: true,
+        series: [
+            ("uniform (-s 16 ... 512)", &uniform),
+            ("adaptive (-s 2048 -a 32 TOL)", &adaptive),
+        ]
+        .into_iter()
+        .map(|(name, ms)| {
+            let points = ms
+                .iter()
+                .map(|m| (m.mean_samples_per_pixel, 100.0 * error(m)))
+                .collect();
+            Series::new(name, points)
+        })
+        .collect(),
+    };
+    line_chart(
+        &chart(
+            "Adaptive vs uniform: error of the image",
+            "relative RMS error (%)",
+            |m| m.error,
+        ),
+        &options.out.join("convergence-adaptive.png"),
+    )?;
+    line_chart(
+        &chart(
+            "Adaptive vs uniform: error of each pixel relative to itself",
+            "RMS pixel relative error (%)",
+            |m| m.pixel_error,
+        ),
+        &options.out.join("convergence-adaptive-pixels.png"),
+    )
+}
+
+/// How much brighter the course's direct lighting is (area light pdf from
+/// an unnormalised direction; point lights without 1/r^2).
+pub fn course(options: &Options) -> Result<()> {
+    println!("\n| scene | light | mean luminance, course / here | pixel ratio, 5th and 95th percentile |");
+    println!("| --- | --- | ---: | ---: |");
+    for (file, light) in [(SPHERES, "area"), ("CBempty.dae", "point")] {
+        let setup = options.setup(file)?;
+        let spp = 256;
+        // Light sampling only: the emission of surfaces that stand in for
+        // no light (CBempty's ceiling quad) is left out of both.
+        let ours = render_direct(&setup, spp, 1, false);
+        let theirs = render_direct(&setup, spp, 1, true);
+        let (a, b) = (pixel_luminance(&ours), pixel_luminance(&theirs));
+        let mut ratios: Vec<f64> = a
+            .iter()
+            .zip(&b)
+            .filter(|(x, _)| **x > 1e-3)
+            .map(|(x, y)| y / x)
+            .collect();
+        ratios.sort_by(f64::total_cmp);
+        let pick = |q: f64| ratios[((ratios.len() - 1) as f64 * q) as usize];
+        println!(
+            "| {file} | {light} | {:.3} | {:.2} – {:.2} |",
+            mean(&b) / mean(&a),
+            pick(0.05),
+            pick(0.95)
+        );
+        let stem = file.trim_end_matches(".dae");
+        for (who, rendered) in [("here", &ours), ("course", &theirs)] {
+            let path = options.out.join(format!("direct-only-{stem}-{who}.png"));
+            pathtracer::render::write_image(&rendered.film, &path)?;
+            eprintln!("wrote {}", path.display());
+        }
+    }
+    Ok(())
+}
