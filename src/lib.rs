@@ -8,10 +8,14 @@
 //! | 1 ray generation | [`raygen`] (pinhole camera) | `part1-raygen` | `docs/01-raygen.md` |
 //! | 1 intersection | [`intersect`] (ray, hit, triangle, sphere) | `part1-raygen` | `docs/02-intersect.md` |
 //! | 2 BVH | [`bvh`] (build, traverse, validate) | `part2-bvh` | `docs/03-bvh.md` |
+//! | 3 direct lighting | [`direct`] (hemisphere, light sampling) | `part3-direct` | `docs/04-direct.md` |
+//! | 4 global illumination | [`global`] (path tracing, Russian roulette) | `part4-global` | `docs/05-global.md` |
+//! | 5 adaptive sampling | [`adaptive`] | `part5-adaptive` | `docs/06-adaptive.md` |
 //!
-//! Support modules: [`math`] (colours, floating-point helpers), [`scene`]
-//! (scene model, the COLLADA loader, built-in scenes), [`render`] (film,
-//! tiles, threads, progress, PNG/EXR output), [`cli`] (the course's flags).
+//! Support modules: [`math`] (colours, frames, warps, floating-point
+//! helpers), [`materials`] (BSDFs), [`scene`] (scene model, the COLLADA
+//! loader, built-in scenes), [`render`] (film, tiles, threads, progress,
+//! PNG/EXR output), [`cli`] (the course's flags and what each binary does).
 //!
 //! Conventions are in `docs/00-conventions.md`.
 
