@@ -61,6 +61,12 @@ pub struct CourseArgs {
     #[arg(short = 'H')]
     pub hemisphere: bool,
 
+    /// Weight light samples as the course's starter code does (area lights
+    /// too bright by the distance, point lights without 1/r^2), to compare
+    /// with the course's images. Off: physically correct.
+    #[arg(long)]
+    pub course_lights: bool,
+
     /// Print what the scene holds, one item a line, and exit.
     #[arg(long)]
     pub info: bool,

@@ -105,7 +105,8 @@ impl DirectLights {
                     LightPdf::Delta => 1.0,
                     LightPdf::SolidAngle(pdf) => 1.0 / pdf,
                 };
-                sum += f * sample.radiance * wi_local.z * weight;
+                let convention = scene.light_convention.factor(light, sample.distance);
+                sum += f * sample.radiance * wi_local.z * weight * convention;
             }
             total += sum / n as f32;
         }

@@ -45,6 +45,32 @@ pub struct LightSample {
     pub pdf: LightPdf,
 }
 
+/// How light samples are weighted: correctly, or as the course's starter
+/// code does (`--course-lights`), to compare with the course's images.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum LightConvention {
+    /// Area lights with the solid-angle pdf `r^2 / (A cos_l)`, point lights
+    /// falling off as `1 / r^2`.
+    #[default]
+    Physical,
+    /// The course's starter: its area light takes the light's cosine from
+    /// the unnormalised vector `q - p`, so its pdf is `r^2 / (A r cos_l)`
+    /// and each sample is `r` times too bright; its point light returns the
+    /// intensity without `1 / r^2`, so `r^2` times too bright.
+    Course,
+}
+
+impl LightConvention {
+    /// Factor on a sample of `light` taken at distance `r` from the point.
+    pub fn factor(self, light: &Light, r: f32) -> f32 {
+        match (self, light) {
+            (LightConvention::Course, Light::Area { .. }) => r,
+            (LightConvention::Course, Light::Point { .. }) => r * r,
+            _ => 1.0,
+        }
+    }
+}
+
 /// Whether `light` is a delta light (sampled once, not `-l` times).
 pub fn is_delta(light: &Light) -> bool {
     matches!(light, Light::Point { .. } | Light::Directional { .. })

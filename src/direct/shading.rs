@@ -3,7 +3,7 @@
 
 use glam::Vec3;
 
-use super::lights::sky_radiance;
+use super::lights::{sky_radiance, LightConvention};
 use crate::intersect::{Hit, Intersector, Ray};
 use crate::materials::Bsdf;
 use crate::math::{Frame, Rgb};
@@ -21,6 +21,9 @@ pub struct SceneTracer<'a, I> {
     /// Whether some surface emits light that no light sampling covers
     /// (an emissive material that is not a stand-in).
     pub has_uncovered_emitters: bool,
+    /// How light samples are weighted (physically, unless asked for the
+    /// course's starter behaviour).
+    pub light_convention: LightConvention,
 }
 
 impl<'a, I: Intersector> SceneTracer<'a, I> {
@@ -38,6 +41,7 @@ impl<'a, I: Intersector> SceneTracer<'a, I> {
             lights: &scene.lights,
             proxy,
             has_uncovered_emitters,
+            light_convention: LightConvention::Physical,
         }
     }
 

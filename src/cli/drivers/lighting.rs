@@ -7,6 +7,7 @@ use super::{describe_or, prepare, report_render, write_film, Prepared, Result};
 use crate::adaptive::Adaptive;
 use crate::bvh::BvhAccel;
 use crate::cli::CourseArgs;
+use crate::direct::lights::LightConvention;
 use crate::direct::{DirectHemisphere, DirectLights, SceneTracer};
 use crate::global::{DirectStrategy, PathTracer};
 use crate::intersect::Intersector;
@@ -70,7 +71,10 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
         scene.source,
         start.elapsed().as_secs_f64()
     );
-    let tracer = SceneTracer::new(&scene, &accel);
+    let mut tracer = SceneTracer::new(&scene, &accel);
+    if args.course_lights {
+        tracer.light_convention = LightConvention::Course;
+    }
     let settings = args.render_settings();
     let rendered = render_lighting(&tracer, &part.tracer, &camera, &settings, part.adaptive);
     report_render(&rendered);
