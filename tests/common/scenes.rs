@@ -1,10 +1,12 @@
-//! Small scenes built in code for the estimator tests, and the plumbing
-//! to average a path tracer's radiance along one ray.
+//! Small scenes built in code for the estimator tests, the path tracers
+//! they compare, and the plumbing to average a path tracer's radiance
+//! along one ray.
 
 use glam::Vec3;
-use pathtracer::direct::SceneTracer;
-use pathtracer::global::PathTracer;
-use pathtracer::intersect::{Intersector, Ray};
+use pathtracer::bvh::BvhAccel;
+use pathtracer::direct::{DirectHemisphere, DirectLights, SceneTracer};
+use pathtracer::global::{DirectStrategy, PathTracer};
+use pathtracer::intersect::{Intersector, Primitives, Ray};
 use pathtracer::math::luminance;
 use pathtracer::math::rng::sampler;
 use pathtracer::math::Frame;
@@ -12,6 +14,42 @@ use pathtracer::scene::normals::area_weighted_vertex_normals;
 use pathtracer::scene::{Light, Material, MaterialId, Scene, Sphere};
 
 use super::stats::MeanEstimate;
+
+/// Direct light by sampling each light once.
+pub const LIGHTS: DirectStrategy = DirectStrategy::Lights(DirectLights {
+    samples_per_light: 1,
+});
+/// Direct light by one uniform hemisphere direction.
+pub const HEMISPHERE: DirectStrategy = DirectStrategy::Hemisphere(DirectHemisphere { samples: 1 });
+
+/// A path tracer that accumulates every bounce up to `max_depth`.
+pub fn tracer(direct: DirectStrategy, max_depth: u32, russian_roulette: bool) -> PathTracer {
+    PathTracer {
+        direct,
+        max_depth,
+        accumulate: true,
+        russian_roulette,
+    }
+}
+
+/// The BVH over a scene's primitives.
+pub fn accel(scene: &Scene) -> BvhAccel {
+    BvhAccel::new(Primitives::from_scene(scene))
+}
+
+/// A grey diffuse material.
+pub fn diffuse(albedo: f32) -> Material {
+    Material::Diffuse {
+        albedo: Vec3::splat(albedo),
+    }
+}
+
+/// A grey emitter that reflects nothing.
+pub fn emission(radiance: f32) -> Material {
+    Material::Emission {
+        radiance: Vec3::splat(radiance),
+    }
+}
 
 /// Builds a [`Scene`]: quads with their own vertices (so flat shading
 /// normals), analytic spheres, lights.

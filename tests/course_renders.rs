@@ -1,0 +1,70 @@
+//! Small renders of the course scenes (skipped, with a note, without the
+//! course's files): the path tracer with both direct-lighting strategies
+//! stays finite on real meshes.
+
+mod common;
+
+use common::{course_dir, tracer, HEMISPHERE, LIGHTS};
+use pathtracer::bvh::BvhAccel;
+use pathtracer::cli::drivers::render_lighting;
+use pathtracer::direct::SceneTracer;
+use pathtracer::intersect::Primitives;
+use pathtracer::raygen::Camera;
+use pathtracer::render::RenderSettings;
+
+/// Small renders of every course scene stay finite: samples with a NaN or
+/// infinite radiance are counted in `Rendered::rejected()` and left out,
+/// so the film has no non-finite pixel. Skipped (with a note) without the
+/// course's files.
+#[test]
+fn course_scenes_render_without_nan_or_infinity() {
+    let Some(dir) = course_dir() else {
+        return;
+    };
+    let mut files: Vec<_> = std::fs::read_dir(&dir)
+        .expect("readable scene folder")
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "dae"))
+        .collect();
+    files.sort();
+    assert!(!files.is_empty(), "no .dae in {}", dir.display());
+    let settings = RenderSettings {
+        width: 64,
+        height: 48,
+        samples_per_pixel: 2,
+        threads: Some(1),
+        seed: 7,
+        progress: false,
+    };
+    for path in files {
+        let scene = pathtracer::scene::load(&path).expect("course scene loads");
+        let primitives = Primitives::from_scene(&scene);
+        let camera = Camera::course_placement(
+            &scene.camera,
+            &primitives.bounds(),
+            settings.width,
+            settings.height,
+        );
+        let accel = BvhAccel::new(primitives);
+        let st = SceneTracer::new(&scene, &accel);
+        for direct in [LIGHTS, HEMISPHERE] {
+            let rendered = render_lighting(&st, &tracer(direct, 3, true), &camera, &settings, None);
+            let name = path.file_name().unwrap().to_string_lossy();
+            eprintln!(
+                "{name} {direct:?}: {} samples, {} rejected",
+                rendered.samples(),
+                rendered.rejected()
+            );
+            assert_eq!(
+                rendered.samples(),
+                (settings.width * settings.height * settings.samples_per_pixel) as u64
+            );
+            assert_eq!(
+                rendered.film.non_finite_count(),
+                0,
+                "{name}: non-finite pixels"
+            );
+            assert_eq!(rendered.rejected(), 0, "{name}: rejected samples");
+        }
+    }
+}
