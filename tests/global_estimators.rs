@@ -212,9 +212,8 @@ fn hemisphere_and_light_sampling_agree_in_a_closed_box() {
     );
 }
 
-/// Russian roulette changes the variance, not the mean: the Cornell box
-/// and the closed box at depth 6 with roulette on and off, two-sample
-/// z-tests. Checked by hand: not dividing by the continuation probability
+/// Russian roulette changes the variance, not the mean: two points of the
+/// Cornell box at depth 6 with roulette on and off, two-sample z-tests. Checked by hand: not dividing by the continuation probability
 /// fails (the roulette estimate drops by 6 %, 50 standard errors).
 #[test]
 fn russian_roulette_on_and_off_agree() {
