@@ -38,11 +38,7 @@ impl DirectHemisphere {
         for _ in 0..n {
             let wi_local = sample_uniform_hemisphere(next_2d(rng));
             let wi = point.frame.to_world(wi_local);
-            let ray = point.hit.spawn_ray(wi);
-            let incoming = match scene.trace(&ray) {
-                Some(emitter) => emitter.emission,
-                None => scene.sky(wi),
-            };
+            let incoming = scene.emitted(&point.hit.spawn_ray(wi));
             let f = point.bsdf.f(point.wo, wi_local);
             sum += f * incoming * wi_local.z / uniform_hemisphere_pdf(wi_local);
         }

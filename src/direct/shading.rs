@@ -56,6 +56,18 @@ impl<'a, I: Intersector> SceneTracer<'a, I> {
         Some(ShadingPoint::new(hit, -ray.dir, &material))
     }
 
+    /// Radiance arriving along `ray` straight from an emitter: the emission
+    /// of the first surface it hits, or the ambient sky if it escapes.
+    pub fn emitted(&self, ray: &Ray) -> Rgb {
+        match self.intersector.intersect(ray) {
+            Some(hit) => self
+                .materials
+                .get(hit.material as usize)
+                .map_or(Rgb::ZERO, Material::emission),
+            None => self.sky(ray.dir),
+        }
+    }
+
     /// Radiance of the ambient sky along a ray that escapes.
     pub fn sky(&self, w: Vec3) -> Rgb {
         sky_radiance(self.lights, w)
