@@ -24,7 +24,7 @@ pub struct CourseArgs {
     pub samples: u32,
 
     /// Worker threads (default: every core).
-    #[arg(short = 't', value_name = "N", value_parser = clap::value_parser!(u16).range(1..))]
+    #[arg(short = 't', value_name = "N", value_parser = clap::value_parser!(u16).range(1..=256))]
     pub threads: Option<u16>,
 
     /// Output size in pixels.
