@@ -79,8 +79,8 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
     let rendered = render_lighting(&tracer, &part.tracer, &camera, &settings, part.adaptive);
     report_render(&rendered);
     match rendered.relative_error() {
-        Some(e) => println!("error: relative standard error {:.2} % (RMS of pixel standard errors / mean luminance)", 100.0 * e),
-        None => println!("error: not estimated (needs at least 2 samples per pixel)"),
+        Some(e) => println!("noise: relative standard error {:.2} % (RMS of pixel standard errors / mean luminance)", 100.0 * e),
+        None => println!("noise: not estimated (needs at least 2 samples per pixel)"),
     }
     if part.adaptive.is_some() {
         println!(
