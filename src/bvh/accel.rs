@@ -48,8 +48,9 @@ pub fn primitive_bounds(primitives: &Primitives) -> Vec<Aabb> {
 impl Intersector for BvhAccel {
     fn intersect(&self, ray: &Ray) -> Option<Hit> {
         let mut best = None;
+        let test = self.primitives.triangle_test;
         self.bvh.closest_hit(ray, |slot, t_max| {
-            let hit = self.shapes[slot as usize].intersect(ray, t_max)?;
+            let hit = self.shapes[slot as usize].intersect_with(ray, t_max, test)?;
             best = Some((slot, hit));
             Some(hit.t)
         });
@@ -61,9 +62,10 @@ impl Intersector for BvhAccel {
     }
 
     fn occluded(&self, ray: &Ray) -> bool {
+        let test = self.primitives.triangle_test;
         self.bvh.any_hit(ray, |slot| {
             self.shapes[slot as usize]
-                .intersect(ray, ray.t_max)
+                .intersect_with(ray, ray.t_max, test)
                 .is_some()
         })
     }

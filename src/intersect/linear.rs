@@ -19,7 +19,7 @@ impl Intersector for LinearScan<'_> {
         let mut t_max = ray.t_max;
         let mut best = None;
         for (id, shape) in self.primitives.shapes.iter().enumerate() {
-            if let Some(hit) = shape.intersect(ray, t_max) {
+            if let Some(hit) = shape.intersect_with(ray, t_max, self.primitives.triangle_test) {
                 t_max = hit.t;
                 best = Some((id as u32, hit));
             }
@@ -31,9 +31,9 @@ impl Intersector for LinearScan<'_> {
     }
 
     fn occluded(&self, ray: &Ray) -> bool {
-        self.primitives
-            .shapes
-            .iter()
-            .any(|s| s.intersect(ray, ray.t_max).is_some())
+        self.primitives.shapes.iter().any(|s| {
+            s.intersect_with(ray, ray.t_max, self.primitives.triangle_test)
+                .is_some()
+        })
     }
 }

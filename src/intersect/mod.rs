@@ -1,9 +1,9 @@
 //! Part 1: rays and their intersections with triangles and spheres.
 //!
 //! - [`Ray`]: `r(t) = o + t d`, `t` in `[t_min, t_max]`, `d` unit length.
-//! - [`moller_trumbore`]: the course's ray-triangle test, and [`triangle`]:
-//!   the watertight test of Woop et al. that the renderer uses; both return
-//!   `t` and barycentrics.
+//! - [`moller_trumbore`]: the course's ray-triangle test (part 1), and
+//!   [`triangle`]: the watertight test of Woop et al. (part 2 onwards); both
+//!   return `t` and barycentrics; [`TriangleTest`] picks one.
 //! - [`sphere`]: the analytic quadratic in a cancellation-free form.
 //! - [`Hit`]: the point, the interpolated shading normal, the geometric
 //!   normal and a bound on the point's rounding error, so that
@@ -23,7 +23,7 @@ pub mod triangle;
 pub use aabb::Aabb;
 pub use hit::Hit;
 pub use linear::LinearScan;
-pub use primitives::{Primitives, Shape, ShapeHit};
+pub use primitives::{Primitives, Shape, ShapeHit, TriangleTest};
 pub use ray::Ray;
 
 /// Anything that can find the closest hit along a ray: a linear scan

@@ -18,10 +18,11 @@
 //! It is exact in real arithmetic but not watertight in floating point: two
 //! triangles sharing an edge compute the edge's zero barycentric from
 //! different expressions, each rounded its own way, and a ray through the
-//! edge can be "outside" both. The renderer therefore intersects triangles
-//! with the watertight test of [`super::triangle`], which agrees with this
-//! one everywhere else (`tests/moller_trumbore.rs` checks both, and shows a ray
-//! slipping through a mesh with this one).
+//! edge can be "outside" both. `part1-raygen` uses it, as the course's
+//! part 1 does; the BVH and the lighting parts use the watertight test of
+//! [`super::triangle`], which agrees with this one everywhere else
+//! (`tests/moller_trumbore.rs` checks both, and shows rays slipping through
+//! a mesh with this one). [`super::TriangleTest`] selects between them.
 
 use super::triangle::{TriangleHit, TriangleShape};
 use super::Ray;

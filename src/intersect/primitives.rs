@@ -11,6 +11,7 @@ use glam::Vec3;
 use crate::math::float::gamma;
 use crate::scene::{MaterialId, Scene, Sphere};
 
+use super::moller_trumbore::moller_trumbore;
 use super::sphere::{reproject, SphereShape};
 use super::triangle::TriangleShape;
 use super::{Aabb, Hit, Ray};
@@ -30,16 +31,42 @@ pub struct ShapeHit {
     pub v: f32,
 }
 
+/// Which ray-triangle test to use.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum TriangleTest {
+    /// Woop, Benthin and Wald's watertight test ([`super::triangle`]): no
+    /// ray slips between triangles that share an edge. The default.
+    #[default]
+    Watertight,
+    /// Möller and Trumbore's test ([`super::moller_trumbore`]), the
+    /// course's: exact in real numbers, but rays can slip through shared
+    /// edges and vertices.
+    MollerTrumbore,
+}
+
 impl Shape {
-    /// The ray's hit with this shape with `t` in `[ray.t_min, t_max]`.
+    /// The ray's hit with this shape with `t` in `[ray.t_min, t_max]`
+    /// (triangles by the watertight test).
     #[inline(always)]
     pub fn intersect(&self, ray: &Ray, t_max: f32) -> Option<ShapeHit> {
+        self.intersect_with(ray, t_max, TriangleTest::Watertight)
+    }
+
+    /// [`Shape::intersect`] with the given triangle test.
+    #[inline(always)]
+    pub fn intersect_with(&self, ray: &Ray, t_max: f32, test: TriangleTest) -> Option<ShapeHit> {
         match self {
-            Shape::Triangle(tri) => tri.intersect(ray, t_max).map(|h| ShapeHit {
-                t: h.t,
-                u: h.u,
-                v: h.v,
-            }),
+            Shape::Triangle(tri) => {
+                let hit = match test {
+                    TriangleTest::Watertight => tri.intersect(ray, t_max),
+                    TriangleTest::MollerTrumbore => moller_trumbore(tri, ray, t_max),
+                };
+                hit.map(|h| ShapeHit {
+                    t: h.t,
+                    u: h.u,
+                    v: h.v,
+                })
+            }
             Shape::Sphere(s) => s
                 .intersect(ray, t_max)
                 .map(|t| ShapeHit { t, u: 0.0, v: 0.0 }),
@@ -72,6 +99,8 @@ struct TriangleShading {
 pub struct Primitives {
     /// One shape per primitive id.
     pub shapes: Vec<Shape>,
+    /// The ray-triangle test intersectors over these shapes use.
+    pub triangle_test: TriangleTest,
     /// Per triangle id.
     triangle_shading: Vec<TriangleShading>,
     spheres: Vec<Sphere>,
@@ -105,6 +134,7 @@ impl Primitives {
             .collect();
         Primitives {
             shapes: triangles.chain(spheres).collect(),
+            triangle_test: TriangleTest::default(),
             triangle_shading,
             spheres: scene.spheres.clone(),
         }

@@ -6,7 +6,7 @@ use std::time::Instant;
 use super::{describe_or, prepare, report_render, write_film, Result};
 use crate::bvh::BvhAccel;
 use crate::cli::CourseArgs;
-use crate::intersect::{Intersector, LinearScan, Ray};
+use crate::intersect::{Intersector, LinearScan, Ray, TriangleTest};
 use crate::raygen::{Camera, NormalShading};
 use crate::render::{pixel_ray, render_image, RenderSettings, Rendered};
 
@@ -21,12 +21,17 @@ pub fn render_normals(
 }
 
 /// `part1-raygen`: normal shading, testing every primitive for every ray.
+///
+/// Triangles are intersected by Möller-Trumbore, the course's test for
+/// part 1 (the later parts use the watertight test; see
+/// `docs/02-intersect.md`).
 pub fn part1(args: &CourseArgs) -> Result<()> {
-    let Some(p) = describe_or(prepare(args)?, args) else {
+    let Some(mut p) = describe_or(prepare(args)?, args) else {
         return Ok(());
     };
+    p.primitives.triangle_test = TriangleTest::MollerTrumbore;
     println!(
-        "{}: {} primitives, linear scan",
+        "{}: {} primitives, linear scan, Möller-Trumbore triangles",
         p.scene.source,
         p.primitives.len()
     );
