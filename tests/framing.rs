@@ -5,7 +5,6 @@
 
 mod common;
 
-use pathtracer::bvh::BvhAccel;
 use pathtracer::intersect::{Intersector, Primitives};
 use pathtracer::raygen::Camera;
 use pathtracer::render::pixel_ray;
@@ -33,25 +32,25 @@ fn pixel_bounds(
 
 #[test]
 fn cbbunny_light_lands_where_the_course_render_has_it() {
-    let Some(dir) = common::course_dir() else {
+    let Some(fixture) = common::cbbunny_reference() else {
         return;
     };
-    let reference = image::open(dir.join("CBbunny_reference_480x360.png"))
-        .unwrap()
-        .to_rgb8();
-    let (w, h) = reference.dimensions();
-    assert_eq!((w, h), (480, 360));
+    let common::CbbunnyReference {
+        scene,
+        camera,
+        accel,
+        width: w,
+        height: h,
+        ..
+    } = &fixture;
+    let (w, h) = (*w, *h);
+    let reference = fixture.reference.to_rgb8();
     let expected = pixel_bounds(w, h, |x, y| {
         reference.get_pixel(x, y).0.iter().all(|&c| c >= 250)
     })
     .unwrap();
-
-    let scene = pathtracer::scene::load(&dir.join("CBbunny.dae")).unwrap();
-    let primitives = Primitives::from_scene(&scene);
-    let camera = Camera::course_placement(&scene.camera, &primitives.bounds(), w, h);
-    let accel = BvhAccel::new(primitives);
     let ours = pixel_bounds(w, h, |x, y| {
-        let ray = pixel_ray(&camera, w, h, x, y, glam::Vec2::splat(0.5));
+        let ray = pixel_ray(camera, w, h, x, y, glam::Vec2::splat(0.5));
         accel.intersect(&ray).is_some_and(|hit| {
             matches!(
                 scene.materials[hit.material as usize],

@@ -6,13 +6,10 @@
 
 mod common;
 
-use pathtracer::bvh::BvhAccel;
 use pathtracer::cli::drivers::render_lighting;
 use pathtracer::direct::{DirectLights, SceneTracer};
 use pathtracer::global::{DirectStrategy, PathTracer};
-use pathtracer::intersect::Primitives;
 use pathtracer::math::{luminance, Rgb};
-use pathtracer::raygen::Camera;
 use pathtracer::render::{tone_map, Film, RenderSettings};
 
 const COLS: u32 = 24;
@@ -36,23 +33,22 @@ fn block_luminance(film: &Film) -> Vec<f32> {
 
 #[test]
 fn cbbunny_looks_like_the_course_render() {
-    let Some(dir) = common::course_dir() else {
+    let Some(fixture) = common::cbbunny_reference() else {
         return;
     };
-    let reference = image::open(dir.join("CBbunny_reference_480x360.png"))
-        .unwrap()
-        .to_rgb32f();
-    let (w, h) = reference.dimensions();
+    let (w, h) = (fixture.width, fixture.height);
     let reference = Film {
         width: w,
         height: h,
-        pixels: reference.pixels().map(|p| Rgb::from_array(p.0)).collect(),
+        pixels: fixture
+            .reference
+            .to_rgb32f()
+            .pixels()
+            .map(|p| Rgb::from_array(p.0))
+            .collect(),
     };
-    let scene = pathtracer::scene::load(&dir.join("CBbunny.dae")).unwrap();
-    let primitives = Primitives::from_scene(&scene);
-    let camera = Camera::course_placement(&scene.camera, &primitives.bounds(), w, h);
-    let accel = BvhAccel::new(primitives);
-    let view = SceneTracer::new(&scene, &accel);
+    let (scene, camera, accel) = (&fixture.scene, &fixture.camera, &fixture.accel);
+    let view = SceneTracer::new(scene, accel);
     let tracer = PathTracer {
         direct: DirectStrategy::Lights(DirectLights {
             samples_per_light: 1,
@@ -68,7 +64,7 @@ fn cbbunny_looks_like_the_course_render() {
         seed: 1,
         ..RenderSettings::default()
     };
-    let rendered = render_lighting(&view, &tracer, &camera, &settings, None);
+    let rendered = render_lighting(&view, &tracer, camera, &settings, None);
     let ours = Film {
         pixels: rendered.film.pixels.iter().map(|&l| tone_map(l)).collect(),
         ..rendered.film

@@ -3,12 +3,14 @@
 #![allow(dead_code, unused_imports)]
 
 pub mod collada;
+pub mod course;
 pub mod exact;
 pub mod geometry;
 pub mod scenes;
 pub mod stats;
 
 pub use collada::*;
+pub use course::*;
 pub use exact::*;
 pub use geometry::*;
 pub use scenes::*;
