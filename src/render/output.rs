@@ -12,7 +12,7 @@
 use std::io::Cursor;
 use std::path::{Path, PathBuf};
 
-use image::{ImageFormat, Rgb32FImage, RgbImage};
+use image::{DynamicImage, ImageFormat, Rgb32FImage, RgbImage};
 
 use super::Film;
 use crate::math::Rgb;
@@ -43,26 +43,13 @@ pub fn write_image(film: &Film, path: &Path) -> Result<(), OutputError> {
         let display: Vec<Rgb> = film.pixels.iter().map(|&p| tone_map(p)).collect();
         return write_png(film.width, film.height, &display, path);
     }
-    let fail = |problem: String| OutputError {
-        path: path.to_path_buf(),
-        problem,
-    };
     let data = film.pixels.iter().flat_map(|p| p.to_array()).collect();
-    let image = Rgb32FImage::from_raw(film.width, film.height, data)
-        .ok_or_else(|| fail("film size does not match its pixels".into()))?;
-    let mut bytes = Cursor::new(Vec::new());
-    image
-        .write_to(&mut bytes, ImageFormat::OpenExr)
-        .map_err(|e| fail(format!("cannot encode OpenEXR: {e}")))?;
-    write_atomically(path, bytes.get_ref()).map_err(|e| fail(e.to_string()))
+    let image = Rgb32FImage::from_raw(film.width, film.height, data).map(DynamicImage::from);
+    encode_and_write(image, ImageFormat::OpenExr, path)
 }
 
 /// Writes display values in `[0, 1]` (row 0 at the top) as an 8-bit PNG.
 pub fn write_png(width: u32, height: u32, display: &[Rgb], path: &Path) -> Result<(), OutputError> {
-    let fail = |problem: String| OutputError {
-        path: path.to_path_buf(),
-        problem,
-    };
     let data = display
         .iter()
         .flat_map(|p| {
@@ -72,12 +59,26 @@ pub fn write_png(width: u32, height: u32, display: &[Rgb], path: &Path) -> Resul
                 .map(|v| v as u8)
         })
         .collect();
-    let image = RgbImage::from_raw(width, height, data)
-        .ok_or_else(|| fail("image size does not match its pixels".into()))?;
+    let image = RgbImage::from_raw(width, height, data).map(DynamicImage::from);
+    encode_and_write(image, ImageFormat::Png, path)
+}
+
+/// Encodes `image` (`None`: its size did not match its pixels) in memory
+/// and writes it atomically to `path`.
+fn encode_and_write(
+    image: Option<DynamicImage>,
+    format: ImageFormat,
+    path: &Path,
+) -> Result<(), OutputError> {
+    let fail = |problem: String| OutputError {
+        path: path.to_path_buf(),
+        problem,
+    };
+    let image = image.ok_or_else(|| fail("image size does not match its pixels".into()))?;
     let mut bytes = Cursor::new(Vec::new());
     image
-        .write_to(&mut bytes, ImageFormat::Png)
-        .map_err(|e| fail(format!("cannot encode PNG: {e}")))?;
+        .write_to(&mut bytes, format)
+        .map_err(|e| fail(format!("cannot encode {format:?}: {e}")))?;
     write_atomically(path, bytes.get_ref()).map_err(|e| fail(e.to_string()))
 }
 
