@@ -53,9 +53,9 @@ fn polygon_irradiance(x: DVec3, n: DVec3, corners: &[DVec3], radiance: f64) -> f
 /// `a / pi * E` with `E` from Lambert's polygon formula, through three
 /// estimators: light sampling of a `Light::Area`; uniform hemisphere
 /// sampling of an emissive quad at the same place (a `Material::Emission`
-/// mesh, no light, so not a stand-in); and light sampling's path tracer in
-/// that emissive-quad scene, whose BSDF-sampled ray picks up the
-/// uncovered emitter.
+/// mesh, no light, so not a stand-in); and light sampling in that
+/// emissive-quad scene, which samples the quad's triangles as a light
+/// (`direct::emitters`).
 ///
 /// Closed form sanity: for a small light the formula tends to
 /// `L A cos_l cos_x / r^2` (checked below). Checked by hand: the area-light
@@ -133,7 +133,11 @@ fn rectangle_irradiance_matches_lamberts_formula() {
         SceneTracer::new(&with_light, &a1),
         SceneTracer::new(&with_quad, &a2),
     );
-    assert!(s2.has_uncovered_emitters);
+    assert_eq!(
+        s2.emitters.len(),
+        2,
+        "the quad's triangles are sampled as a light"
+    );
     let est = estimate(&s1, &tracer(LIGHTS, 1, false), &ray, 50_000, 1);
     assert_mean_matches("area light, light sampling", est, expected, alpha, 0.0);
     let est = estimate(&s2, &tracer(HEMISPHERE, 1, false), &ray, 300_000, 2);
@@ -146,7 +150,7 @@ fn rectangle_irradiance_matches_lamberts_formula() {
     );
     let est = estimate(&s2, &tracer(LIGHTS, 1, false), &ray, 200_000, 3);
     assert_mean_matches(
-        "emissive quad, BSDF-sampled pick-up",
+        "emissive quad, sampled as a light",
         est,
         expected,
         alpha,

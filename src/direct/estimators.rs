@@ -1,6 +1,8 @@
 //! The two direct-lighting estimators of part 3.
 
-use super::lights::{is_delta, sample_light, LightPdf};
+use rand::Rng;
+
+use super::lights::{is_delta, sample_light, LightPdf, LightSample};
 use super::shading::{SceneTracer, ShadingPoint};
 use crate::intersect::Intersector;
 use crate::math::rng::{next_2d, Sampler};
@@ -70,42 +72,58 @@ impl DirectLights {
         point: &ShadingPoint,
         rng: &mut Sampler,
     ) -> Rgb {
+        let samples = self.samples_per_light.max(1);
         let mut total = Rgb::ZERO;
         for light in scene.lights {
-            let n = if is_delta(light) {
-                1
-            } else {
-                self.samples_per_light.max(1)
-            };
+            let n = if is_delta(light) { 1 } else { samples };
             let mut sum = Rgb::ZERO;
             for _ in 0..n {
-                let Some(sample) = sample_light(light, point.hit.p, next_2d(rng)) else {
-                    continue;
-                };
-                let wi_local = point.frame.to_local(sample.wi);
-                if wi_local.z <= 0.0 {
-                    continue;
+                if let Some(sample) = sample_light(light, point.hit.p, next_2d(rng)) {
+                    let convention = scene.light_convention.factor(light, sample.distance);
+                    sum += convention * unoccluded_contribution(scene, point, &sample);
                 }
-                let shadow = if sample.distance.is_finite() {
-                    point
-                        .hit
-                        .spawn_ray_to(point.hit.p + sample.distance * sample.wi)
-                } else {
-                    point.hit.spawn_ray(sample.wi)
-                };
-                if scene.intersector.occluded(&shadow) {
-                    continue;
-                }
-                let f = point.bsdf.f(point.wo, wi_local);
-                let weight = match sample.pdf {
-                    LightPdf::Delta => 1.0,
-                    LightPdf::SolidAngle(pdf) => 1.0 / pdf,
-                };
-                let convention = scene.light_convention.factor(light, sample.distance);
-                sum += f * sample.radiance * wi_local.z * weight * convention;
             }
             total += sum / n as f32;
         }
+        // Emissive triangles that stand in for no light, as one more area light.
+        if !scene.emitters.is_empty() {
+            let mut sum = Rgb::ZERO;
+            for _ in 0..samples {
+                let pick = rng.gen::<f32>();
+                if let Some(sample) = scene.emitters.sample(point.hit.p, pick, next_2d(rng)) {
+                    sum += unoccluded_contribution(scene, point, &sample);
+                }
+            }
+            total += sum / samples as f32;
+        }
         total
     }
+}
+
+/// One light sample's term `f L cos / p` (`f L cos` for a delta light), or
+/// zero when the light is below the surface or a shadow ray finds it blocked.
+fn unoccluded_contribution<I: Intersector>(
+    scene: &SceneTracer<I>,
+    point: &ShadingPoint,
+    sample: &LightSample,
+) -> Rgb {
+    let wi_local = point.frame.to_local(sample.wi);
+    if wi_local.z <= 0.0 {
+        return Rgb::ZERO;
+    }
+    let shadow = if sample.distance.is_finite() {
+        point
+            .hit
+            .spawn_ray_to(point.hit.p + sample.distance * sample.wi)
+    } else {
+        point.hit.spawn_ray(sample.wi)
+    };
+    if scene.intersector.occluded(&shadow) {
+        return Rgb::ZERO;
+    }
+    let weight = match sample.pdf {
+        LightPdf::Delta => 1.0,
+        LightPdf::SolidAngle(pdf) => 1.0 / pdf,
+    };
+    point.bsdf.f(point.wo, wi_local) * sample.radiance * wi_local.z * weight
 }

@@ -20,6 +20,7 @@
 //! Zero-bounce light (emission seen by the camera) is added by
 //! [`zero_bounce`].
 
+pub mod emitters;
 pub mod estimators;
 pub mod lights;
 pub mod shading;

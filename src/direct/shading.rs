@@ -3,6 +3,7 @@
 
 use glam::Vec3;
 
+use super::emitters::EmissiveTriangles;
 use super::lights::{sky_radiance, LightConvention};
 use crate::intersect::{Hit, Intersector, Ray};
 use crate::materials::Bsdf;
@@ -10,16 +11,24 @@ use crate::math::{Frame, Rgb};
 use crate::scene::{Light, Material, Scene};
 
 /// A scene as the lighting estimators see it: an intersector, materials,
-/// lights, and which emissive materials merely show a light to the camera.
+/// lights, the emissive triangles light sampling samples, and which
+/// emissive surfaces merely show a light to the camera.
 pub struct SceneTracer<'a, I> {
     pub intersector: I,
     pub materials: &'a [Material],
     pub lights: &'a [Light],
+    /// Emissive triangles that stand in for no light: light sampling
+    /// samples them like an area light.
+    pub emitters: EmissiveTriangles,
     /// Per material: an emissive surface standing in for one of
     /// [`Self::lights`] (see [`light_proxies`]).
     pub proxy: Vec<bool>,
-    /// Whether some surface emits light that no light sampling covers
-    /// (an emissive material that is not a stand-in).
+    /// Per material: its triangles are in [`Self::emitters`].
+    sampled: Vec<bool>,
+    /// Primitive ids below this are triangles.
+    triangle_count: u32,
+    /// Whether some surface emits light that no light sampling covers:
+    /// an emissive sphere that is not a stand-in.
     pub has_uncovered_emitters: bool,
     /// How light samples are weighted (physically, unless asked for the
     /// course's starter behaviour).
@@ -29,17 +38,20 @@ pub struct SceneTracer<'a, I> {
 impl<'a, I: Intersector> SceneTracer<'a, I> {
     pub fn new(scene: &'a Scene, intersector: I) -> Self {
         let proxy = light_proxies(scene);
-        let used = used_materials(scene);
-        let has_uncovered_emitters = scene
-            .materials
-            .iter()
-            .enumerate()
-            .any(|(m, material)| used[m] && !proxy[m] && material.emission() != Rgb::ZERO);
+        let emits = |m: usize| !proxy[m] && scene.materials[m].emission() != Rgb::ZERO;
+        let sampled: Vec<bool> = (0..scene.materials.len()).map(emits).collect();
+        let has_uncovered_emitters = scene.spheres.iter().any(|s| {
+            let m = s.material as usize;
+            m < sampled.len() && sampled[m]
+        });
         SceneTracer {
             intersector,
             materials: &scene.materials,
             lights: &scene.lights,
+            emitters: EmissiveTriangles::new(scene, &sampled),
             proxy,
+            sampled,
+            triangle_count: scene.mesh.triangles.len() as u32,
             has_uncovered_emitters,
             light_convention: LightConvention::Physical,
         }
@@ -73,12 +85,13 @@ impl<'a, I: Intersector> SceneTracer<'a, I> {
         sky_radiance(self.lights, w)
     }
 
-    /// Whether the emission of `point` stands in for a scene light.
-    pub fn is_proxy(&self, point: &ShadingPoint) -> bool {
-        self.proxy
-            .get(point.hit.material as usize)
-            .copied()
-            .unwrap_or(false)
+    /// Whether light sampling already counts the emission of `point`: it
+    /// stands in for a scene light, or it is one of [`Self::emitters`].
+    pub fn is_covered(&self, point: &ShadingPoint) -> bool {
+        let m = point.hit.material as usize;
+        let proxy = self.proxy.get(m).copied().unwrap_or(false);
+        let sampled = self.sampled.get(m).copied().unwrap_or(false);
+        proxy || (sampled && point.hit.primitive < self.triangle_count)
     }
 }
 
@@ -221,6 +234,9 @@ mod tests {
         assert!(light_proxies(&scene).iter().all(|&p| !p));
         let nothing = crate::intersect::Primitives::default();
         let accel = crate::intersect::LinearScan::new(&nothing);
-        assert!(SceneTracer::new(&scene, accel).has_uncovered_emitters);
+        let tracer = SceneTracer::new(&scene, accel);
+        // Light sampling then samples the quad's two triangles itself.
+        assert_eq!(tracer.emitters.len(), 2);
+        assert!(!tracer.has_uncovered_emitters);
     }
 }

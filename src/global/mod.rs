@@ -130,7 +130,7 @@ impl PathTracer {
                 return l;
             };
             let bounce_weight = sample.f * sample.wi.z / sample.pdf;
-            if picks_up_emitters && !scene.is_proxy(&next) {
+            if picks_up_emitters && !scene.is_covered(&next) {
                 l += throughput * bounce_weight * next.emission;
             }
             if depth <= 1 {
