@@ -8,9 +8,9 @@
 //! ```
 //!
 //! With cosine-weighted sampling of a diffuse BSDF, `f cos / pdf = a`
-//! exactly, so with light sampling and no Russian roulette the estimate has
-//! no variance at all; Russian roulette and hemisphere sampling add noise,
-//! which a confidence interval absorbs.
+//! exactly; the noise comes from sampling the glowing walls (as lights, or
+//! by hemisphere rays) and from Russian roulette, and a confidence interval
+//! absorbs it.
 
 use glam::Vec3;
 use pathtracer::bvh::BvhAccel;

@@ -105,7 +105,8 @@ impl<'a, I: Intersector> SceneTracer<'a, I> {
 /// every triangle using it lies within reach of an area light of the same
 /// radiance: each vertex closer to the light's centre than the light's
 /// half-diagonal plus 10 % of it, and within 1 % of that diagonal of its plane.
-/// Every other emissive surface lights the scene through the paths that hit it.
+/// Every other emissive surface lights the scene: triangles are sampled as
+/// lights ([`super::emitters`]), spheres light it through the paths that hit them.
 pub fn light_proxies(scene: &Scene) -> Vec<bool> {
     let mut proxy: Vec<bool> = scene
         .materials

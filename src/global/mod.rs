@@ -16,11 +16,12 @@
 //! divides the surviving estimate by `q`: unbiased, as
 //! `E = q (X / q) + (1 - q) 0 = X`.
 //!
-//! Light is counted once: scene lights by light sampling at each vertex
-//! (or by the hemisphere estimator's rays), the emission of surfaces that
-//! stand in for lights only when the camera sees them, and the emission of
-//! every other emissive surface when a light-sampling path's continuation
-//! ray hits it (with `-H` the hemisphere rays already count it).
+//! Light is counted once: scene lights and emissive triangles by light
+//! sampling at each vertex (or by the hemisphere estimator's rays), the
+//! emission of surfaces that stand in for lights only when the camera sees
+//! them, and the emission of other emissive spheres when a light-sampling
+//! path's continuation ray hits them (with `-H` the hemisphere rays already
+//! count them).
 
 use crate::direct::{zero_bounce, DirectHemisphere, DirectLights, SceneTracer, ShadingPoint};
 use crate::intersect::{Intersector, Ray};
@@ -92,10 +93,10 @@ impl PathTracer {
     /// Light leaving `point` after at least one bounce, with `depth`
     /// bounces left (the course's recursion, written as a loop).
     ///
-    /// At each vertex: the direct light from the scene's lights; with light
-    /// sampling, also the emission of a surface that no light sampling
-    /// covers, found by the BSDF-sampled ray; then, if bounces are left and
-    /// Russian roulette lets it, the same ray continues the path.
+    /// At each vertex: the direct light; with light sampling, also the
+    /// emission of a surface that light sampling does not cover (an
+    /// emissive sphere), found by the BSDF-sampled ray; then, if bounces are
+    /// left and Russian roulette lets it, the same ray continues the path.
     #[doc(alias = "at_least_one_bounce_radiance")]
     pub fn at_least_one_bounce<I: Intersector>(
         &self,
