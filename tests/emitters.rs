@@ -33,8 +33,11 @@ fn solid_angle(x: DVec3, corners: [DVec3; 3]) -> f64 {
     2.0 * numerator.atan2(denominator)
 }
 
+/// A triangle's corners and its (grey) radiance.
+type Glowing = ([Vec3; 3], f32);
+
 /// Emissive triangles with the given radiances (one material each).
-fn emitters(triangles: &[([Vec3; 3], f32)]) -> Scene {
+fn emitters(triangles: &[Glowing]) -> Scene {
     let positions: Vec<Vec3> = triangles.iter().flat_map(|(t, _)| *t).collect();
     let indices: Vec<[u32; 3]> = (0..triangles.len() as u32)
         .map(|i| [3 * i, 3 * i + 1, 3 * i + 2])
@@ -58,7 +61,7 @@ fn emitters(triangles: &[([Vec3; 3], f32)]) -> Scene {
 
 #[test]
 fn inverse_density_averages_to_the_solid_angle() {
-    let cases: [(&str, Vec<([Vec3; 3], f32)>, Vec3); 3] = [
+    let cases: [(&str, Vec<Glowing>, Vec3); 3] = [
         (
             "one triangle, oblique",
             vec![(
