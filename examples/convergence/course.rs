@@ -8,7 +8,6 @@
 //! - Point light: the course returns the intensity `I` as the radiance,
 //!   without the `1 / r^2` falloff: each sample is `r^2` times too large.
 
-use pathtracer::direct::lights::LightConvention;
 use pathtracer::direct::{DirectLights, SceneTracer};
 use pathtracer::math::Rgb;
 use pathtracer::render::{render_image, Rendered};
@@ -21,7 +20,7 @@ use crate::measure::Setup;
 pub fn render_direct(setup: &Setup, spp: u32, samples_per_light: u32, course: bool) -> Rendered {
     let mut scene = SceneTracer::new(&setup.scene, &setup.accel);
     if course {
-        scene.light_convention = LightConvention::Course;
+        scene = scene.with_course_lights();
     }
     let settings = setup.settings(spp, 1);
     let direct = DirectLights { samples_per_light };

@@ -80,6 +80,17 @@ impl<'a, I: Intersector> SceneTracer<'a, I> {
         }
     }
 
+    /// Light as the course's starter code computes it (`--course-lights`):
+    /// its weighting of light samples ([`LightConvention::Course`]), and
+    /// only `scene->lights` lighting the scene, so emitters that stand in
+    /// for no light are seen by the camera but light nothing.
+    pub fn with_course_lights(mut self) -> Self {
+        self.light_convention = LightConvention::Course;
+        self.emitters = EmissiveTriangles::default();
+        self.has_uncovered_emitters = false;
+        self
+    }
+
     /// Radiance of the ambient sky along a ray that escapes.
     pub fn sky(&self, w: Vec3) -> Rgb {
         sky_radiance(self.lights, w)

@@ -7,7 +7,6 @@ use super::{describe_or, prepare, report_render, write_film, Prepared, Result};
 use crate::adaptive::Adaptive;
 use crate::bvh::BvhAccel;
 use crate::cli::CourseArgs;
-use crate::direct::lights::LightConvention;
 use crate::direct::{DirectHemisphere, DirectLights, SceneTracer};
 use crate::global::{DirectStrategy, PathTracer};
 use crate::intersect::Intersector;
@@ -73,7 +72,7 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
     );
     let mut tracer = SceneTracer::new(&scene, &accel);
     if args.course_lights {
-        tracer.light_convention = LightConvention::Course;
+        tracer = tracer.with_course_lights();
     }
     let settings = args.render_settings();
     let rendered = render_lighting(&tracer, &part.tracer, &camera, &settings, part.adaptive);
