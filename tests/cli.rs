@@ -116,3 +116,25 @@ fn exr_output_holds_linear_radiance() {
         "the back wall faces the camera: blue = 1"
     );
 }
+
+#[test]
+fn course_lights_brighten_the_area_lit_box() {
+    let dir = tempfile::tempdir().unwrap();
+    let mean_radiance = |extra: &[&str]| {
+        let path = dir.path().join("m.exr");
+        let mut args = vec!["-r", "96", "72", "-s", "4", "-f", path.to_str().unwrap()];
+        args.extend(extra);
+        let (ok, _, stderr) = run(PATHTRACER, &args);
+        assert!(ok, "{stderr}");
+        let image = image::open(&path).unwrap().to_rgb32f();
+        image.pixels().map(|p| p.0[1] as f64).sum::<f64>() / image.pixels().len() as f64
+    };
+    let physical = mean_radiance(&[]);
+    let course = mean_radiance(&["--course-lights"]);
+    // The course's area-light weighting is r times too bright, and most of
+    // the box is more than one unit from the light.
+    assert!(
+        course > 1.1 * physical,
+        "course {course}, physical {physical}"
+    );
+}
