@@ -16,7 +16,7 @@
 
 use glam::{Vec2, Vec3};
 
-use super::lights::{LightPdf, LightSample};
+use super::lights::{LightSample, SurfacePoint};
 use crate::math::{luminance, Rgb};
 use crate::scene::Scene;
 
@@ -97,22 +97,13 @@ impl EmissiveTriangles {
         // Uniform point on the triangle.
         let s = u.x.sqrt();
         let q = (1.0 - s) * e.p0 + s * (1.0 - u.y) * e.p1 + s * u.y * e.p2;
-        let to_light = q - p;
-        let distance_squared = to_light.length_squared();
-        let distance = distance_squared.sqrt();
-        if distance.is_nan() || distance <= 0.0 {
-            return None;
-        }
-        let wi = to_light / distance;
-        let cos_emitter = e.normal.dot(wi).abs();
-        if cos_emitter <= 0.0 {
-            return None;
-        }
-        Some(LightSample {
+        let point = SurfacePoint {
+            q,
+            normal: e.normal,
+            two_sided: true,
             radiance: e.radiance,
-            wi,
-            distance,
-            pdf: LightPdf::SolidAngle(pmf * distance_squared / (e.area * cos_emitter)),
-        })
+            area_pdf: pmf / e.area,
+        };
+        point.seen_from(p)
     }
 }

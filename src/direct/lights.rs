@@ -71,6 +71,46 @@ impl LightConvention {
     }
 }
 
+/// A point sampled on an emitting surface with a density per unit area.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SurfacePoint {
+    pub q: Vec3,
+    /// Unit normal of the surface at `q` (the emitting side if one-sided).
+    pub normal: Vec3,
+    /// Whether both sides emit.
+    pub two_sided: bool,
+    pub radiance: Rgb,
+    /// Density with which `q` was chosen, per unit area.
+    pub area_pdf: f32,
+}
+
+impl SurfacePoint {
+    /// The light sample this point gives at `p`: the one place an area
+    /// density becomes a solid-angle one, `p_w = p_A r^2 / cos_e` with
+    /// `cos_e` the emitter's cosine towards `p`. `None` at zero distance
+    /// or when `p` sees the back of a one-sided emitter.
+    pub fn seen_from(&self, p: Vec3) -> Option<LightSample> {
+        let to_light = self.q - p;
+        let distance_squared = to_light.length_squared();
+        let distance = distance_squared.sqrt();
+        if distance.is_nan() || distance <= 0.0 {
+            return None;
+        }
+        let wi = to_light / distance;
+        let facing = -self.normal.dot(wi);
+        let cos_emitter = if self.two_sided { facing.abs() } else { facing };
+        if cos_emitter <= 0.0 {
+            return None;
+        }
+        Some(LightSample {
+            radiance: self.radiance,
+            wi,
+            distance,
+            pdf: LightPdf::SolidAngle(self.area_pdf * distance_squared / cos_emitter),
+        })
+    }
+}
+
 /// Whether `light` is a delta light (sampled once, not `-l` times).
 pub fn is_delta(light: &Light) -> bool {
     matches!(light, Light::Point { .. } | Light::Directional { .. })
@@ -90,24 +130,18 @@ pub fn sample_light(light: &Light, p: Vec3, u: Vec2) -> Option<LightSample> {
             dim_y,
         } => {
             let q = center + (u.x - 0.5) * dim_x + (u.y - 0.5) * dim_y;
-            let to_light = q - p;
-            let distance_squared = to_light.length_squared();
-            let distance = distance_squared.sqrt();
-            if distance.is_nan() || distance <= 0.0 {
-                return None;
-            }
-            let wi = to_light / distance;
-            let cos_light = -direction.dot(wi);
             let area = dim_x.length() * dim_y.length();
-            if cos_light <= 0.0 || area <= 0.0 {
+            if area <= 0.0 {
                 return None;
             }
-            Some(LightSample {
+            let emitter = SurfacePoint {
+                q,
+                normal: direction,
+                two_sided: false,
                 radiance,
-                wi,
-                distance,
-                pdf: LightPdf::SolidAngle(distance_squared / (area * cos_light)),
-            })
+                area_pdf: 1.0 / area,
+            };
+            emitter.seen_from(p)
         }
         Light::Point {
             intensity,
