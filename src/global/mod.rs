@@ -120,17 +120,18 @@ impl PathTracer {
             if depth <= 1 && !picks_up_emitters {
                 return l;
             }
-            let Some(sample) = point.bsdf.sample(point.wo, next_2d(rng)) else {
+            let uc = rng.gen::<f32>();
+            let Some(sample) = point.bsdf.sample(point.wo, uc, next_2d(rng)) else {
                 return l;
             };
-            if sample.pdf.is_nan() || sample.pdf <= 0.0 || sample.wi.z <= 0.0 {
+            if sample.pdf().is_nan() || sample.pdf() <= 0.0 || sample.wi.z <= 0.0 {
                 return l;
             }
             let wi = point.frame.to_world(sample.wi);
             let Some(next) = scene.trace(&point.hit.spawn_ray(wi)) else {
                 return l;
             };
-            let bounce_weight = sample.f * sample.wi.z / sample.pdf;
+            let bounce_weight = sample.weight();
             if picks_up_emitters && !scene.is_covered(&next) {
                 l += throughput * bounce_weight * next.emission;
             }

@@ -6,7 +6,7 @@
 
 use glam::{Vec2, Vec3};
 
-use super::BsdfSample;
+use super::{BsdfSample, Density};
 use crate::math::warp::{cosine_hemisphere_pdf, sample_cosine_hemisphere};
 use crate::math::Rgb;
 
@@ -36,7 +36,9 @@ impl Diffuse {
         (pdf > 0.0).then(|| BsdfSample {
             f: self.f(wo, wi),
             wi,
-            pdf,
+            density: Density::SolidAngle(pdf),
+            transmission: false,
+            eta: 1.0,
         })
     }
 

@@ -1,72 +1,194 @@
-//! BSDFs in the local shading frame (normal on +Z, `cos_theta(w) = w.z`).
+//! BSDFs in the local shading frame: the normal on +Z, `cos_theta(w) = w.z`,
+//! `wo` (towards the viewer) always on the +Z side, `wi` on either side.
 //!
-//! So far the diffuse BSDF of parts 3 and 4; mirror, glass and microfacet
-//! (assignment 3-2) come later and render as diffuse with a warning until
-//! then ([`Bsdf::for_material`]).
+//! Every BSDF answers three questions (pbrt-v4's `BxDF`, lajolla's BSDF
+//! functions):
+//!
+//! - `f(wo, wi)`: the BSDF's value for two given directions (0 for a delta
+//!   lobe: no given direction can hit one);
+//! - `sample(wo, uc, u)`: a direction `wi` drawn from `uc` (a 1D number that
+//!   chooses a lobe) and `u` (a 2D number within the lobe), as a
+//!   [`BsdfSample`] that says how it was drawn;
+//! - `pdf(wo, wi)`: the density per steradian with which `sample` draws a
+//!   given `wi` (0 for a delta lobe), for multiple importance sampling.
+//!
+//! The estimator of one bounce is `f |cos theta_i| / pdf` in every case
+//! ([`BsdfSample::weight`]): a delta lobe's `f` holds its weight divided by
+//! `|cos theta_i|`, and its `pdf` is the probability of choosing the lobe.
+//!
+//! | material | file | lobes |
+//! | --- | --- | --- |
+//! | diffuse | [`diffuse`] | cosine-weighted reflection |
+//! | mirror | [`mirror`] | delta reflection |
+//! | refraction | [`refraction`] | delta transmission |
+//! | glass | [`glass`] | delta reflection and transmission, Fresnel ([`fresnel`]) |
 
 pub mod diffuse;
+pub mod fresnel;
+pub mod glass;
+pub mod mirror;
+pub mod refraction;
+pub mod specular;
 
 pub use diffuse::Diffuse;
+pub use glass::Glass;
+pub use mirror::Mirror;
+pub use refraction::Refraction;
 
 use glam::{Vec2, Vec3};
 
 use crate::math::Rgb;
 use crate::scene::Material;
 
-/// A sampled direction of a BSDF: the value `f(wo, wi)`, the direction and
-/// its density per steradian.
+/// How a sampled direction was drawn.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct BsdfSample {
-    pub f: Rgb,
-    pub wi: Vec3,
-    pub pdf: f32,
+pub enum Density {
+    /// From a delta lobe, chosen with this probability (in `(0, 1]`).
+    Delta(f32),
+    /// With this density per steradian (positive).
+    SolidAngle(f32),
 }
 
-/// The BSDF of a surface.
+/// A direction sampled from a BSDF (pbrt-v4's `BSDFSample`, lajolla's
+/// `BSDFSampleRecord`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BsdfSample {
+    /// `f(wo, wi)`; for a delta lobe, its weight divided by `|cos theta_i|`.
+    pub f: Rgb,
+    /// The sampled direction, local frame, unit length.
+    pub wi: Vec3,
+    pub density: Density,
+    /// Whether `wi` crosses the surface (is below it).
+    pub transmission: bool,
+    /// Relative index of refraction crossed: the index of `wi`'s side over
+    /// `wo`'s side (1 for a reflection).
+    pub eta: f32,
+}
+
+impl BsdfSample {
+    /// The density per steradian, or the lobe's probability for a delta lobe.
+    pub fn pdf(&self) -> f32 {
+        match self.density {
+            Density::Delta(p) | Density::SolidAngle(p) => p,
+        }
+    }
+
+    pub fn is_delta(&self) -> bool {
+        matches!(self.density, Density::Delta(_))
+    }
+
+    /// The factor a path's throughput takes on: `f |cos theta_i| / pdf`.
+    /// Zero for a non-positive or non-finite density.
+    pub fn weight(&self) -> Rgb {
+        let pdf = self.pdf();
+        if pdf > 0.0 && pdf.is_finite() {
+            self.f * self.wi.z.abs() / pdf
+        } else {
+            Rgb::ZERO
+        }
+    }
+}
+
+/// The Fresnel reflectance of dielectrics (glass).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum FresnelModel {
+    /// The Fresnel equations.
+    #[default]
+    Exact,
+    /// Schlick's approximation, as the course computes it (`--schlick`).
+    Schlick,
+}
+
+/// Choices a render makes for every BSDF.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct BsdfOptions {
+    pub fresnel: FresnelModel,
+}
+
+/// The BSDF of a surface point.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Bsdf {
+    /// Reflects nothing (a pure emitter).
+    Black,
     Diffuse(Diffuse),
+    Mirror(Mirror),
+    Refraction(Refraction),
+    Glass(Glass),
 }
 
 impl Bsdf {
-    /// The BSDF of `material`, and whether it is a stand-in: materials of
-    /// later parts (mirror, glass, refraction, microfacet) render as
-    /// diffuse of their main colour until those parts exist. Emission
-    /// reflects nothing.
-    pub fn for_material(material: &Material) -> (Bsdf, bool) {
-        let diffuse = |albedo| Bsdf::Diffuse(Diffuse { albedo });
+    /// The BSDF of `material` at a point seen from its front (outside) when
+    /// `front_face`, else from inside; the side decides the relative index
+    /// of refraction (`ior` entering, `1 / ior` leaving).
+    pub fn new(material: &Material, front_face: bool, options: BsdfOptions) -> Bsdf {
+        let relative = |ior: f32| if front_face { ior } else { 1.0 / ior };
         match *material {
             Material::Diffuse { albedo } | Material::EmissiveDiffuse { albedo, .. } => {
-                (diffuse(albedo), false)
+                Bsdf::Diffuse(Diffuse { albedo })
             }
-            Material::Emission { .. } => (diffuse(Rgb::ZERO), false),
-            Material::Mirror { reflectance } => (diffuse(reflectance), true),
-            Material::Glass { transmittance, .. } | Material::Refraction { transmittance, .. } => {
-                (diffuse(transmittance), true)
-            }
-            Material::Microfacet { .. } => (diffuse(Rgb::splat(0.5)), true),
+            Material::Emission { .. } => Bsdf::Black,
+            Material::Mirror { reflectance } => Bsdf::Mirror(Mirror { reflectance }),
+            Material::Refraction {
+                transmittance, ior, ..
+            } => Bsdf::Refraction(Refraction {
+                transmittance,
+                eta: relative(ior),
+            }),
+            Material::Glass {
+                reflectance,
+                transmittance,
+                ior,
+                ..
+            } => Bsdf::Glass(Glass {
+                reflectance,
+                transmittance,
+                eta: relative(ior),
+                fresnel: options.fresnel,
+            }),
+            Material::Microfacet { .. } => Bsdf::Diffuse(Diffuse {
+                albedo: Rgb::splat(0.5),
+            }),
         }
     }
 
-    /// `f(wo, wi)`, both in the local frame.
+    /// Whether every lobe is a delta: light sampling cannot help here, and
+    /// emission reached from here is counted in full.
+    pub fn is_delta(&self) -> bool {
+        matches!(self, Bsdf::Mirror(_) | Bsdf::Refraction(_) | Bsdf::Glass(_))
+    }
+
+    /// Whether the BSDF reflects and transmits nothing.
+    pub fn is_black(&self) -> bool {
+        matches!(self, Bsdf::Black)
+    }
+
+    /// `f(wo, wi)`, both in the local frame (0 for delta lobes).
     pub fn f(&self, wo: Vec3, wi: Vec3) -> Rgb {
         match self {
             Bsdf::Diffuse(d) => d.f(wo, wi),
+            _ => Rgb::ZERO,
         }
     }
 
-    /// Samples `wi` given `wo` from `u` in `[0, 1)^2`.
+    /// Samples `wi` given `wo`: `uc` in `[0, 1)` chooses a lobe, `u` in
+    /// `[0, 1)^2` the direction within it.
     #[doc(alias = "sample_f")]
-    pub fn sample(&self, wo: Vec3, u: Vec2) -> Option<BsdfSample> {
+    pub fn sample(&self, wo: Vec3, uc: f32, u: Vec2) -> Option<BsdfSample> {
         match self {
+            Bsdf::Black => None,
             Bsdf::Diffuse(d) => d.sample(wo, u),
+            Bsdf::Mirror(m) => m.sample(wo),
+            Bsdf::Refraction(r) => r.sample(wo),
+            Bsdf::Glass(g) => g.sample(wo, uc),
         }
     }
 
-    /// Density of [`Bsdf::sample`] choosing `wi`, per steradian.
+    /// Density of [`Bsdf::sample`] choosing `wi`, per steradian (0 for
+    /// delta lobes).
     pub fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
         match self {
             Bsdf::Diffuse(d) => d.pdf(wo, wi),
+            _ => 0.0,
         }
     }
 }

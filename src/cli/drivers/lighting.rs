@@ -102,7 +102,7 @@ fn warn_about_stand_ins(scene: &Scene) {
     let mut kinds: Vec<&str> = scene
         .materials
         .iter()
-        .filter(|m| crate::materials::Bsdf::for_material(m).1)
+        .filter(|m| matches!(m, crate::scene::Material::Microfacet { .. }))
         .map(|m| m.kind())
         .collect();
     kinds.sort_unstable();

@@ -1,0 +1,56 @@
+//! Perfect specular transmission only (the course's `RefractionBSDF`): all
+//! light crosses the interface in the direction of Snell's law, scaled by
+//! the transmittance `T` and by `1 / eta^2`, the change of radiance across
+//! the boundary (see [`super::glass`]):
+//!
+//! ```text
+//! f(wo, wi) = T / eta^2 delta(wi - refract(wo)) / |cos theta_i|
+//! ```
+//!
+//! No Fresnel reflection, so the material is not physical; it shows
+//! refraction alone. Under total internal reflection no direction
+//! transmits, and the light reflects instead, scaled by `T` (the course's
+//! code returns black there, losing that light).
+
+use glam::Vec3;
+
+use super::specular::{reflect, refract};
+use super::{BsdfSample, Density};
+use crate::math::Rgb;
+
+/// Specular transmission by Snell's law.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Refraction {
+    pub transmittance: Rgb,
+    /// Index of the far side over the near side.
+    pub eta: f32,
+}
+
+impl Refraction {
+    /// The refracted direction, or the mirror direction under total
+    /// internal reflection.
+    pub fn sample(&self, wo: Vec3) -> Option<BsdfSample> {
+        if wo.z <= 0.0 {
+            return None;
+        }
+        Some(match refract(wo, self.eta) {
+            Some(wi) => BsdfSample {
+                f: self.transmittance / (self.eta * self.eta * wi.z.abs()),
+                wi,
+                density: Density::Delta(1.0),
+                transmission: true,
+                eta: self.eta,
+            },
+            None => {
+                let wi = reflect(wo);
+                BsdfSample {
+                    f: self.transmittance / wi.z,
+                    wi,
+                    density: Density::Delta(1.0),
+                    transmission: false,
+                    eta: 1.0,
+                }
+            }
+        })
+    }
+}
