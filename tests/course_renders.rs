@@ -7,10 +7,10 @@ mod common;
 use common::{course_dir, tracer, HEMISPHERE, LIGHTS};
 use pathtracer::bvh::BvhAccel;
 use pathtracer::cli::drivers::render_lighting;
-use pathtracer::direct::SceneTracer;
 use pathtracer::intersect::Primitives;
 use pathtracer::raygen::Camera;
 use pathtracer::render::RenderSettings;
+use pathtracer::world::World;
 
 /// Small renders of every course scene stay finite: samples with a NaN or
 /// infinite radiance are counted in `Rendered::rejected()` and left out,
@@ -46,7 +46,7 @@ fn course_scenes_render_without_nan_or_infinity() {
             settings.height,
         );
         let accel = BvhAccel::new(primitives);
-        let st = SceneTracer::new(&scene, &accel);
+        let st = World::new(&scene, &accel);
         for direct in [LIGHTS, HEMISPHERE] {
             let rendered = render_lighting(&st, &tracer(direct, 3, true), &camera, &settings, None);
             let name = path.file_name().unwrap().to_string_lossy();

@@ -19,35 +19,14 @@ mod common;
 use std::f64::consts::PI;
 
 use common::{
-    accel, assert_mean_matches, assert_means_agree, diffuse, emission, estimate, ray_towards,
-    rect_corners, rect_light, tracer, SceneBuilder, ALPHA, HEMISPHERE, LIGHTS,
+    accel, assert_mean_matches, assert_means_agree, diffuse, emission, estimate,
+    polygon_irradiance, ray_towards, rect_corners, rect_light, tracer, SceneBuilder, ALPHA,
+    HEMISPHERE, LIGHTS,
 };
 use glam::{DVec3, Vec3};
-use pathtracer::direct::SceneTracer;
 use pathtracer::scene::builtin::cornell_box;
 use pathtracer::scene::Light;
-
-/// Irradiance at `x` (unit normal `n`) from a polygon of uniform radiance
-/// `radiance` entirely above the horizon of `x`: Lambert's formula
-///
-/// ```text
-/// E = L / 2 * | sum_i gamma_i n . (r_i x r_{i+1}) / |r_i x r_{i+1}| |
-/// ```
-///
-/// with `r_i` the unit vectors from `x` to the vertices and `gamma_i` the
-/// angle between `r_i` and `r_{i+1}` (Lambert 1760; see Arvo 1995,
-/// "Applications of irradiance tensors to the simulation of non-Lambertian
-/// phenomena", eq. 9).
-fn polygon_irradiance(x: DVec3, n: DVec3, corners: &[DVec3], radiance: f64) -> f64 {
-    let r: Vec<DVec3> = corners.iter().map(|&c| (c - x).normalize()).collect();
-    let sum: f64 = (0..r.len())
-        .map(|i| {
-            let (a, b) = (r[i], r[(i + 1) % r.len()]);
-            a.dot(b).clamp(-1.0, 1.0).acos() * n.dot(a.cross(b).normalize())
-        })
-        .sum();
-    radiance / 2.0 * sum.abs()
-}
+use pathtracer::world::World;
 
 /// Radiance leaving a diffuse floor lit by a tilted rectangle equals
 /// `a / pi * E` with `E` from Lambert's polygon formula, through three
@@ -129,12 +108,9 @@ fn rectangle_irradiance_matches_lamberts_formula() {
 
     let alpha = ALPHA / 3.0;
     let (a1, a2) = (accel(&with_light), accel(&with_quad));
-    let (s1, s2) = (
-        SceneTracer::new(&with_light, &a1),
-        SceneTracer::new(&with_quad, &a2),
-    );
+    let (s1, s2) = (World::new(&with_light, &a1), World::new(&with_quad, &a2));
     assert_eq!(
-        s2.emitters.len(),
+        s2.lights.emissive_triangles().map_or(0, |t| t.len()),
         2,
         "the quad's triangles are sampled as a light"
     );
@@ -200,7 +176,7 @@ fn plane_under_the_ambient_sky() {
         });
         let scene = b.finish();
         let accel = accel(&scene);
-        let st = SceneTracer::new(&scene, &accel);
+        let st = World::new(&scene, &accel);
         let ray = ray_towards(2.0 * n + 0.5 * u + 0.3 * v, Vec3::ZERO);
         let est = estimate(
             &st,
@@ -231,8 +207,8 @@ fn plane_under_the_ambient_sky() {
 fn hemisphere_and_light_sampling_agree() {
     let cornell = cornell_box();
     let cornell_accel = accel(&cornell);
-    let cornell_tracer = SceneTracer::new(&cornell, &cornell_accel);
-    assert!(!cornell_tracer.has_uncovered_emitters);
+    let cornell_tracer = World::new(&cornell, &cornell_accel);
+    assert!(!cornell_tracer.lights.has_unsampled_emitters());
 
     let eye = Vec3::new(0.0, 0.75, 0.9);
     let alpha = ALPHA / 4.0;

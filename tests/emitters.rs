@@ -1,4 +1,4 @@
-//! Sampling emissive triangles as lights (`direct::emitters`): the density
+//! Sampling emissive triangles as lights (`lights::triangles`): the density
 //! each sample reports is right, checked through an identity that holds
 //! for any correct sampler, `E[1 / p(w)] = ∫ dω`, the solid angle of the
 //! emitters (where the density is positive). For one triangle seen from
@@ -18,8 +18,7 @@ mod common;
 
 use common::*;
 use glam::{DVec3, Vec3};
-use pathtracer::direct::emitters::EmissiveTriangles;
-use pathtracer::direct::lights::LightPdf;
+use pathtracer::lights::{EmissiveTriangles, LightPdf};
 use pathtracer::math::rng::{next_2d, sampler};
 use pathtracer::scene::normals::area_weighted_vertex_normals;
 use pathtracer::scene::{Material, Scene, TriangleMesh};
@@ -130,7 +129,9 @@ fn inverse_density_averages_to_the_solid_angle() {
         let mut rng = sampler(2024, i as u64);
         let inverse_densities = (0..200_000).map(|_| {
             let pick = rng.gen::<f32>();
-            let sample = set.sample(*x, pick, next_2d(&mut rng)).expect("a sample");
+            let sample = set
+                .sample_li(*x, pick, next_2d(&mut rng))
+                .expect("a sample");
             match sample.pdf {
                 LightPdf::SolidAngle(p) => 1.0 / p as f64,
                 LightPdf::Delta => panic!("emitters are not delta lights"),
@@ -166,7 +167,11 @@ fn brighter_triangles_are_picked_more_often() {
     let bright = (0..n)
         .filter(|_| {
             let pick = rng.gen::<f32>();
-            set.sample(x, pick, next_2d(&mut rng)).unwrap().radiance.x > 2.0
+            set.sample_li(x, pick, next_2d(&mut rng))
+                .unwrap()
+                .radiance
+                .x
+                > 2.0
         })
         .count();
     // Power ratio 1 : 3, so 3/4 of the picks; binomial se = sqrt(n p (1 - p)).

@@ -11,21 +11,30 @@
 //! exactly; the noise comes from sampling the glowing walls (as lights, or
 //! by hemisphere rays) and from Russian roulette, and a confidence interval
 //! absorbs it.
+//!
+//! An object that neither absorbs nor emits changes nothing in a furnace:
+//! a perfect mirror sphere shows walls of radiance `Le / (1 - a)`, and so
+//! does a glass sphere (reflectance and transmittance 1, exact Fresnel):
+//! outside it `F L + (1 - F) L_inside / eta^2` with `L_inside = eta^2 L`,
+//! which checks the `1 / eta^2` of radiance crossing the boundary.
+//!
+//! Every comparison is a confidence interval at level `1 - ALPHA / k` for
+//! the `k` comparisons of its test (Bonferroni), with fixed seeds.
+
+mod common;
+
+use common::{assert_mean_matches, MeanEstimate, ALPHA};
 
 use glam::Vec3;
 use pathtracer::bvh::BvhAccel;
-use pathtracer::direct::{DirectHemisphere, DirectLights, SceneTracer};
+use pathtracer::direct::{DirectHemisphere, DirectLights};
 use pathtracer::global::{DirectStrategy, PathTracer};
 use pathtracer::intersect::{Primitives, Ray};
 use pathtracer::math::rng::{next_2d, sampler};
 use pathtracer::math::warp::sample_uniform_sphere;
 use pathtracer::scene::normals::area_weighted_vertex_normals;
-use pathtracer::scene::{Material, Scene, TriangleMesh};
-
-/// Half-width multiplier of the confidence intervals: two-sided p = 6.8e-6
-/// per comparison; the file makes 8 comparisons with noise, so a correct
-/// path tracer fails it with probability below 6e-5.
-const Z: f64 = 4.5;
+use pathtracer::scene::{Material, Scene, Sphere, TriangleMesh};
+use pathtracer::world::World;
 
 /// A closed unit cube of 12 triangles with one material. Each face has its
 /// own four vertices, so the course's rebuilt vertex normals are the face
@@ -63,34 +72,49 @@ fn furnace(albedo: f32, radiance: f32) -> Scene {
     }
 }
 
-/// Mean and standard error of `n` camera rays from inside the box.
-fn estimate(scene: &Scene, tracer: &PathTracer, n: usize, seed: u64) -> (f64, f64) {
+/// Mean and standard error of `n` camera rays in random directions from
+/// a point inside the box.
+fn estimate(scene: &Scene, tracer: &PathTracer, n: usize, seed: u64) -> MeanEstimate {
+    estimate_from(Vec3::new(0.3, 0.6, 0.45), scene, tracer, n, seed)
+}
+
+/// Mean and standard error of `n` camera rays in random directions from `origin`.
+fn estimate_from(
+    origin: Vec3,
+    scene: &Scene,
+    tracer: &PathTracer,
+    n: usize,
+    seed: u64,
+) -> MeanEstimate {
     let accel = BvhAccel::new(Primitives::from_scene(scene));
-    let view = SceneTracer::new(scene, &accel);
+    let view = World::new(scene, &accel);
     let mut rng = sampler(seed, 0);
-    let (mut s1, mut s2) = (0.0f64, 0.0f64);
-    for _ in 0..n {
-        let origin = Vec3::new(0.3, 0.6, 0.45);
+    MeanEstimate::of((0..n).map(|_| {
         let ray = Ray::new(origin, sample_uniform_sphere(next_2d(&mut rng)));
-        let x = tracer.radiance(&view, &ray, &mut rng).x as f64;
-        s1 += x;
-        s2 += x * x;
-    }
-    let mean = s1 / n as f64;
-    let variance = ((s2 - s1 * s1 / n as f64) / (n as f64 - 1.0)).max(0.0);
-    (mean, (variance / n as f64).sqrt())
+        let l = tracer.radiance(&view, &ray, &mut rng);
+        assert!(l.is_finite(), "non-finite radiance {l}");
+        l.x as f64
+    }))
 }
 
 fn geometric_sum(albedo: f64, radiance: f64, max_depth: u32) -> f64 {
     radiance * (1.0 - albedo.powi(max_depth as i32 + 1)) / (1.0 - albedo)
 }
 
-fn strategies() -> [(&'static str, DirectStrategy); 2] {
+fn strategies() -> [(&'static str, DirectStrategy); 3] {
     [
         (
-            "light sampling",
+            "light sampling with MIS",
             DirectStrategy::Lights(DirectLights {
                 samples_per_light: 1,
+                mis: true,
+            }),
+        ),
+        (
+            "light sampling alone",
+            DirectStrategy::Lights(DirectLights {
+                samples_per_light: 1,
+                mis: false,
             }),
         ),
         (
@@ -112,12 +136,9 @@ fn furnace_without_russian_roulette_sums_m_bounces() {
                 accumulate: true,
                 russian_roulette: false,
             };
-            let (mean, se) = estimate(&scene, &tracer, 4000, 7);
-            let tolerance = Z * se + 1e-4 * expected;
-            assert!(
-                (mean - expected).abs() <= tolerance,
-                "{name}, a = {albedo}, m = {max_depth}: {mean} ± {se}, expected {expected}"
-            );
+            let label = format!("{name}, a = {albedo}, m = {max_depth}");
+            let est = estimate(&scene, &tracer, 4000, 7);
+            assert_mean_matches(&label, est, expected, ALPHA / 6.0, 1e-4 * expected);
         }
     }
 }
@@ -135,12 +156,10 @@ fn furnace_with_russian_roulette_reaches_le_over_one_minus_a() {
                 accumulate: true,
                 russian_roulette: true,
             };
-            let (mean, se) = estimate(&scene, &tracer, 20_000, 11);
-            assert!(se > 0.0, "Russian roulette adds noise");
-            assert!(
-                (mean - expected).abs() <= Z * se,
-                "{name}, a = {albedo}: {mean} ± {se}, expected {expected}"
-            );
+            let est = estimate(&scene, &tracer, 20_000, 11);
+            assert!(est.se > 0.0, "Russian roulette adds noise");
+            let label = format!("{name}, a = {albedo}");
+            assert_mean_matches(&label, est, expected, ALPHA / 6.0, 0.0);
         }
     }
 }
@@ -157,10 +176,62 @@ fn only_the_m_th_bounce_with_o_0() {
             accumulate: false,
             russian_roulette: false,
         };
-        let (mean, se) = estimate(&scene, &tracer, 4000, 13);
-        assert!(
-            (mean - expected).abs() <= Z * se + 1e-4 * expected,
-            "{name}: {mean} ± {se}, expected {expected}"
-        );
+        let est = estimate(&scene, &tracer, 4000, 13);
+        assert_mean_matches(name, est, expected, ALPHA / 3.0, 1e-4 * expected);
+    }
+}
+
+/// A perfect mirror sphere and a clear glass sphere (exact Fresnel) are
+/// invisible in the furnace: every strategy, Russian roulette on, finds
+/// `Le / (1 - a)` from outside, and `eta^2 Le / (1 - a)` from inside the
+/// glass, where radiance is `eta^2` times brighter (`L / n^2` is invariant
+/// along a ray; Veach 1997, section 5.2). Checked by hand: glass without
+/// the `1 / eta^2` still passes from outside (the factors of entering and
+/// leaving cancel) but fails from inside (by hundreds of standard errors).
+#[test]
+fn mirror_and_glass_spheres_are_invisible_in_a_furnace() {
+    let albedo = 0.5f64;
+    let expected = 1.0 / (1.0 - albedo);
+    let objects = [
+        (
+            "mirror sphere",
+            Material::Mirror {
+                reflectance: Vec3::ONE,
+            },
+        ),
+        (
+            "glass sphere",
+            Material::Glass {
+                reflectance: Vec3::ONE,
+                transmittance: Vec3::ONE,
+                roughness: 0.0,
+                ior: 1.5,
+            },
+        ),
+    ];
+    for (object, material) in objects {
+        let mut scene = furnace(albedo as f32, 1.0);
+        scene.materials.push(material);
+        scene.spheres.push(Sphere {
+            center: Vec3::new(0.55, 0.45, 0.5),
+            radius: 0.25,
+            material: 1,
+        });
+        for (name, direct) in strategies() {
+            let tracer = PathTracer {
+                direct,
+                max_depth: 200,
+                accumulate: true,
+                russian_roulette: true,
+            };
+            let est = estimate(&scene, &tracer, 20_000, 17);
+            let label = format!("{object}, {name}");
+            assert_mean_matches(&label, est, expected, ALPHA / 9.0, 0.0);
+            if object == "glass sphere" {
+                let inside = estimate_from(scene.spheres[0].center, &scene, &tracer, 20_000, 19);
+                let label = format!("inside the {object}, {name}");
+                assert_mean_matches(&label, inside, 2.25 * expected, ALPHA / 9.0, 0.0);
+            }
+        }
     }
 }

@@ -23,11 +23,11 @@ use common::{
     tracer, SceneBuilder, ALPHA, HEMISPHERE, LIGHTS,
 };
 use glam::{DVec3, Vec3};
-use pathtracer::direct::SceneTracer;
 use pathtracer::global::PathTracer;
 use pathtracer::intersect::Ray;
 use pathtracer::scene::builtin::cornell_box;
 use pathtracer::scene::Light;
+use pathtracer::world::World;
 
 /// The integrating sphere complements the textbook furnace of
 /// `tests/furnace.rs` (closed box, albedo `a`, emission `Le` everywhere,
@@ -99,7 +99,7 @@ fn furnace_integrating_sphere() {
             });
         let scene = builder.finish();
         let accel = accel(&scene);
-        let tracer_scene = SceneTracer::new(&scene, &accel);
+        let tracer_scene = World::new(&scene, &accel);
         let l_direct = a / PI * intensity * cos_x / to_light.length_squared();
         let l_bar = a / PI * intensity / (radius * radius);
         let expected = if accumulate {
@@ -145,7 +145,7 @@ fn emissive_enclosure_lights_a_convex_object_once() {
         .sphere(Vec3::new(0.2, 0.0, 0.0), 3.0, outer);
     let scene = b.finish();
     let accel = accel(&scene);
-    let st = SceneTracer::new(&scene, &accel);
+    let st = World::new(&scene, &accel);
     let ray = ray_towards(Vec3::new(0.5, 1.5, 1.6), Vec3::ZERO);
     let cases = [(LIGHTS, 1), (LIGHTS, 4), (HEMISPHERE, 1), (HEMISPHERE, 4)];
     let alpha = ALPHA / cases.len() as f64;
@@ -192,7 +192,7 @@ fn hemisphere_and_light_sampling_agree_in_a_closed_box() {
         .sphere(Vec3::new(0.3, -0.6, 0.1), 0.4, ball);
     let closed = b.finish();
     let closed_accel = accel(&closed);
-    let closed_tracer = SceneTracer::new(&closed, &closed_accel);
+    let closed_tracer = World::new(&closed, &closed_accel);
 
     let alpha = ALPHA / 4.0;
     let ray = ray_towards(Vec3::new(-0.5, 0.2, 0.8), Vec3::new(0.2, -1.0, -0.4));
@@ -219,7 +219,7 @@ fn hemisphere_and_light_sampling_agree_in_a_closed_box() {
 fn russian_roulette_on_and_off_agree() {
     let cornell = cornell_box();
     let cornell_accel = accel(&cornell);
-    let st = SceneTracer::new(&cornell, &cornell_accel);
+    let st = World::new(&cornell, &cornell_accel);
     let eye = Vec3::new(0.0, 0.75, 0.9);
     let targets = [Vec3::new(0.2, 0.0, -0.3), Vec3::new(-1.0, 0.5, -0.5)];
     let alpha = ALPHA / targets.len() as f64;

@@ -7,10 +7,11 @@
 mod common;
 
 use pathtracer::cli::drivers::render_lighting;
-use pathtracer::direct::{DirectLights, SceneTracer};
+use pathtracer::direct::DirectLights;
 use pathtracer::global::{DirectStrategy, PathTracer};
 use pathtracer::math::{luminance, Rgb};
 use pathtracer::render::{tone_map, Film, RenderSettings};
+use pathtracer::world::World;
 
 const COLS: u32 = 24;
 const ROWS: u32 = 18;
@@ -48,10 +49,11 @@ fn cbbunny_looks_like_the_course_render() {
             .collect(),
     };
     let (scene, camera, accel) = (&fixture.scene, &fixture.camera, &fixture.accel);
-    let view = SceneTracer::new(scene, accel);
+    let view = World::new(scene, accel);
     let tracer = PathTracer {
         direct: DirectStrategy::Lights(DirectLights {
             samples_per_light: 1,
+            mis: true,
         }),
         max_depth: 5,
         accumulate: true,

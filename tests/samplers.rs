@@ -30,7 +30,7 @@ use std::f64::consts::PI;
 
 use common::{chi_square, rect_corners, rect_light, ALPHA};
 use glam::{Vec2, Vec3};
-use pathtracer::direct::lights::{light_pdf, sample_light, LightPdf};
+use pathtracer::lights::{Light as SampledLight, LightConvention, LightPdf};
 use pathtracer::materials::Diffuse;
 use pathtracer::math::rng::{next_2d, sampler};
 use pathtracer::math::warp::{
@@ -93,12 +93,14 @@ fn integrate(
     sum * dc * dp
 }
 
-/// The family of `sample_light` / `light_pdf` for `light` seen from `p`.
+/// The family of `Light::sample_li` / `Light::pdf_li` for `light` seen from `p`.
 /// The grid's pole points at the light's centre (area light) or up (sky),
 /// and `cos_min` bounds the light's extent (for a rectangle the largest
 /// angle from the pole is at a corner, as the region within a cone is
 /// convex on the light's plane).
 fn light_family(name: &str, light: Light, p: Vec3) -> Family {
+    let sampled = SampledLight::from_scene(&light, LightConvention::Physical);
+    let queried = sampled.clone();
     let (frame, cos_min) = match light {
         Light::Area { center, .. } => {
             let axis = (center - p).normalize();
@@ -113,13 +115,13 @@ fn light_family(name: &str, light: Light, p: Vec3) -> Family {
     Family {
         name: name.into(),
         sample: Box::new(move |u| {
-            let s = sample_light(&light, p, u)?;
+            let s = sampled.sample_li(p, 0.5, u)?;
             match s.pdf {
                 LightPdf::SolidAngle(pdf) => Some((s.wi, pdf as f64)),
                 LightPdf::Delta => None,
             }
         }),
-        pdf: Box::new(move |w| light_pdf(&light, p, w) as f64),
+        pdf: Box::new(move |w| queried.pdf_li(p, w, None) as f64),
         frame,
         cos_min,
     }
@@ -331,7 +333,8 @@ fn the_checks_reject_wrong_densities() {
                 name: "area light with the pdf's r^2 replaced by r".into(),
                 sample,
                 pdf: Box::new(move |w| {
-                    let t = light_pdf(&light, p, w) as f64;
+                    let sampled = SampledLight::from_scene(&light, LightConvention::Physical);
+                    let t = sampled.pdf_li(p, w, None) as f64;
                     // pdf = r^2 / (A cos): divide by r once.
                     let r = match light {
                         Light::Area {

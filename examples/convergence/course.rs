@@ -8,9 +8,11 @@
 //! - Point light: the course returns the intensity `I` as the radiance,
 //!   without the `1 / r^2` falloff: each sample is `r^2` times too large.
 
-use pathtracer::direct::{DirectLights, SceneTracer};
+use pathtracer::direct::DirectLights;
+use pathtracer::lights::LightConvention;
 use pathtracer::math::Rgb;
 use pathtracer::render::{render_image, Rendered};
+use pathtracer::world::{World, WorldOptions};
 
 use crate::measure::Setup;
 
@@ -18,12 +20,22 @@ use crate::measure::Setup;
 /// emission the camera sees, which both share): the library's
 /// `DirectLights`, or with `course` the course's factors.
 pub fn render_direct(setup: &Setup, spp: u32, samples_per_light: u32, course: bool) -> Rendered {
-    let mut scene = SceneTracer::new(&setup.scene, &setup.accel);
-    if course {
-        scene = scene.with_course_lights();
-    }
+    let light_convention = if course {
+        LightConvention::Course
+    } else {
+        LightConvention::Physical
+    };
+    let options = WorldOptions {
+        light_convention,
+        ..WorldOptions::default()
+    };
+    let scene = World::with_options(&setup.scene, &setup.accel, options);
     let settings = setup.settings(spp, 1);
-    let direct = DirectLights { samples_per_light };
+    // Light sampling alone: without the BSDF half, no MIS weights.
+    let direct = DirectLights {
+        samples_per_light,
+        mis: false,
+    };
     render_image(&setup.camera, &settings, None, |ray, rng| {
         match scene.trace(ray) {
             Some(point) => direct.estimate(&scene, &point, rng),

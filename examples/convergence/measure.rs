@@ -31,13 +31,13 @@ use glam::Vec2;
 use pathtracer::adaptive::Adaptive;
 use pathtracer::bvh::BvhAccel;
 use pathtracer::cli::drivers::render_lighting;
-use pathtracer::direct::SceneTracer;
 use pathtracer::global::PathTracer;
 use pathtracer::intersect::Primitives;
 use pathtracer::math::luminance;
 use pathtracer::raygen::Camera;
 use pathtracer::render::{pixel_ray, RenderSettings, Rendered};
 use pathtracer::scene::Scene;
+use pathtracer::world::World;
 
 /// Seed of every reference render; test renders use small seeds.
 pub const REFERENCE_SEED: u64 = 0x5EED_0000_0000;
@@ -79,7 +79,7 @@ impl Setup {
 
     /// Per pixel, whether none of 8 x 8 sub-pixel rays sees an emitter.
     pub fn emitter_free_pixels(&self) -> Vec<bool> {
-        let scene = SceneTracer::new(&self.scene, &self.accel);
+        let scene = World::new(&self.scene, &self.accel);
         let (w, h) = (self.width, self.height);
         let sees_emitter = |x, y| {
             (0..64).any(|k| {
@@ -115,7 +115,7 @@ impl Setup {
         adaptive: Option<Adaptive>,
         seed: u64,
     ) -> Rendered {
-        let scene = SceneTracer::new(&self.scene, &self.accel);
+        let scene = World::new(&self.scene, &self.accel);
         let settings = self.settings(samples_per_pixel, seed);
         render_lighting(&scene, tracer, &self.camera, &settings, adaptive)
     }

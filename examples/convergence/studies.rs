@@ -32,7 +32,10 @@ const SPHERES: &str = "CBspheres_lambertian.dae";
 
 fn lights(samples_per_light: u32, max_depth: u32, russian_roulette: bool) -> PathTracer {
     PathTracer {
-        direct: DirectStrategy::Lights(DirectLights { samples_per_light }),
+        direct: DirectStrategy::Lights(DirectLights {
+            samples_per_light,
+            mis: true,
+        }),
         max_depth,
         accumulate: true,
         russian_roulette,

@@ -5,8 +5,11 @@ use std::path::{Path, PathBuf};
 use clap::Parser;
 
 use crate::adaptive::Adaptive;
+use crate::lights::LightConvention;
+use crate::materials::{BsdfOptions, FresnelModel};
 use crate::render::RenderSettings;
 use crate::scene::{builtin, Scene, SceneError};
+use crate::world::WorldOptions;
 
 /// Largest accepted image side, pixels.
 pub const MAX_SIDE: u32 = 1 << 14;
@@ -66,6 +69,17 @@ pub struct CourseArgs {
     /// with the course's images. Off: physically correct.
     #[arg(long)]
     pub course_lights: bool,
+
+    /// Light sampling alone at each vertex, emission counted only after
+    /// the camera and delta bounces: the course's estimator. Default:
+    /// multiple importance sampling of lights and BSDFs.
+    #[arg(long)]
+    pub no_mis: bool,
+
+    /// Glass reflects by Schlick's approximation of the Fresnel equations,
+    /// as the course computes it. Default: the exact Fresnel equations.
+    #[arg(long)]
+    pub schlick: bool,
 
     /// Print what the scene holds, one item a line, and exit.
     #[arg(long)]
@@ -142,6 +156,24 @@ impl CourseArgs {
             batch: batch as u32,
             tolerance,
         }))
+    }
+
+    /// How the scene's lights and BSDFs behave under these flags.
+    pub fn world_options(&self) -> WorldOptions {
+        WorldOptions {
+            light_convention: if self.course_lights {
+                LightConvention::Course
+            } else {
+                LightConvention::Physical
+            },
+            bsdf: BsdfOptions {
+                fresnel: if self.schlick {
+                    FresnelModel::Schlick
+                } else {
+                    FresnelModel::Exact
+                },
+            },
+        }
     }
 
     /// The render settings these flags ask for (progress bar on).

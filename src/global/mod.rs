@@ -1,33 +1,46 @@
-//! Part 4: global illumination by path tracing with Russian roulette.
+//! Part 4: global illumination by path tracing with Russian roulette, and
+//! the one integrator loop every lighting part runs.
 //!
-//! The rendering equation, `L_o = L_e + integral f L_i cos dwi`, expanded
-//! bounce by bounce: the camera sees the emission of the first surface
-//! ([`crate::direct::zero_bounce`]), plus at each surface point the direct
-//! light ([`crate::direct`]), plus light that arrives after more bounces,
-//! estimated by continuing the path in one direction sampled from the BSDF:
+//! The rendering equation, `L_o = L_e + integral f L_i |cos| dwi`, expanded
+//! bounce by bounce. A path starts at the camera; at each vertex it adds
+//!
+//! 1. the emission its last ray found, weighted by [`emission_weight`]
+//!    (the course's `zero_bounce_radiance` for the camera ray);
+//! 2. unless the BSDF is a delta lobe, the direct light estimated at the
+//!    vertex ([`crate::direct`], the course's `one_bounce_radiance`);
+//! 3. then continues in one direction sampled from the BSDF, its
+//!    throughput multiplied by `f |cos| / pdf` and divided by the Russian
+//!    roulette probability:
 //!
 //! ```text
-//! L(p, wo) = L_direct(p, wo) + f(wo, wi) L(p', -wi) cos(theta_i) / (pdf(wi) q)
+//! L = sum over vertices k of  beta_k (w L_e + L_direct),
+//! beta_{k+1} = beta_k f(wo, wi) |cos(theta_i)| / (pdf(wi) q_k)
 //! ```
 //!
-//! where `p'` is the next hit. Paths have at most `-m` bounces. Russian
-//! roulette (Arvo and Kirk 1990) ends a path after its first indirect
-//! bounce with probability `1 - q`, `q =` [`CONTINUE_PROBABILITY`], and
-//! divides the surviving estimate by `q`: unbiased, as
-//! `E = q (X / q) + (1 - q) 0 = X`.
+//! A vertex is a bounce of light: direct light at vertex `k`, and emission
+//! found by the ray leaving vertex `k`, have `k` bounces. Paths count
+//! bounces up to `-m` (`-o 1`) or exactly `-m` (`-o 0`); the ray leaving
+//! vertex `m` is still traced when the emission it may find counts (with
+//! multiple importance sampling it carries the BSDF half of the direct
+//! light). A ray that escapes sees the lights at infinity.
 //!
-//! Light is counted once: scene lights and emissive triangles by light
-//! sampling at each vertex (or by the hemisphere estimator's rays), the
-//! emission of surfaces that stand in for lights only when the camera sees
-//! them, and the emission of other emissive spheres when a light-sampling
-//! path's continuation ray hits them (with `-H` the hemisphere rays already
-//! count them).
+//! Russian roulette (Arvo and Kirk 1990) ends a path after its first
+//! indirect bounce with probability `1 - q`, `q =` [`CONTINUE_PROBABILITY`],
+//! and divides the surviving estimate by `q`: unbiased for the sum of
+//! bounces up to `-m`, as `E = q (X / q) + (1 - q) 0 = X`.
 
-use crate::direct::{zero_bounce, DirectHemisphere, DirectLights, SceneTracer, ShadingPoint};
+pub mod emission;
+
+pub use emission::{emission_weight, Emitter, PrevVertex};
+
+use rand::Rng;
+
+use crate::direct::{DirectHemisphere, DirectLights};
 use crate::intersect::{Intersector, Ray};
+use crate::lights::{EmitterRole, LightHit};
 use crate::math::rng::{next_2d, Sampler};
 use crate::math::Rgb;
-use rand::Rng;
+use crate::world::{ShadingPoint, World};
 
 /// Probability of continuing a path at each bounce after the first
 /// indirect one.
@@ -38,6 +51,13 @@ pub const CONTINUE_PROBABILITY: f32 = 0.65;
 pub enum DirectStrategy {
     Hemisphere(DirectHemisphere),
     Lights(DirectLights),
+}
+
+impl DirectStrategy {
+    /// Whether light sampling is weighted against BSDF sampling.
+    pub fn mis(&self) -> bool {
+        matches!(self, DirectStrategy::Lights(d) if d.mis)
+    }
 }
 
 /// The path tracer of part 4 (and the direct-only renderer of part 3 with
@@ -55,92 +75,57 @@ pub struct PathTracer {
 }
 
 impl PathTracer {
+    /// Whether light with `bounces` bounces is part of the image.
+    fn counts(&self, bounces: u32) -> bool {
+        if self.accumulate {
+            bounces <= self.max_depth
+        } else {
+            bounces == self.max_depth
+        }
+    }
+
     /// Radiance arriving at the camera along `ray`.
     #[doc(alias = "est_radiance_global_illumination")]
+    #[doc(alias = "at_least_one_bounce_radiance")]
     pub fn radiance<I: Intersector>(
         &self,
-        scene: &SceneTracer<I>,
-        ray: &Ray,
+        world: &World<I>,
+        camera_ray: &Ray,
         rng: &mut Sampler,
     ) -> Rgb {
-        let Some(point) = scene.trace(ray) else {
-            return Rgb::ZERO;
-        };
         let mut l = Rgb::ZERO;
-        if self.accumulate || self.max_depth == 0 {
-            l += zero_bounce(&point);
-        }
-        if self.max_depth > 0 {
-            l += self.at_least_one_bounce(scene, &point, self.max_depth, rng);
-        }
-        l
-    }
-
-    /// Direct light at `point`, by the chosen strategy.
-    #[doc(alias = "one_bounce_radiance")]
-    pub fn one_bounce<I: Intersector>(
-        &self,
-        scene: &SceneTracer<I>,
-        point: &ShadingPoint,
-        rng: &mut Sampler,
-    ) -> Rgb {
-        match self.direct {
-            DirectStrategy::Hemisphere(h) => h.estimate(scene, point, rng),
-            DirectStrategy::Lights(d) => d.estimate(scene, point, rng),
-        }
-    }
-
-    /// Light leaving `point` after at least one bounce, with `depth`
-    /// bounces left (the course's recursion, written as a loop).
-    ///
-    /// At each vertex: the direct light; with light sampling, also the
-    /// emission of a surface that light sampling does not cover (an
-    /// emissive sphere), found by the BSDF-sampled ray; then, if bounces are
-    /// left and Russian roulette lets it, the same ray continues the path.
-    #[doc(alias = "at_least_one_bounce_radiance")]
-    pub fn at_least_one_bounce<I: Intersector>(
-        &self,
-        scene: &SceneTracer<I>,
-        point: &ShadingPoint,
-        depth: u32,
-        rng: &mut Sampler,
-    ) -> Rgb {
-        let light_sampling = matches!(self.direct, DirectStrategy::Lights(_));
-        let mut l = Rgb::ZERO;
-        let mut throughput = Rgb::ONE;
-        let mut point = *point;
-        let mut depth = depth;
+        let mut beta = Rgb::ONE;
+        let mut ray = *camera_ray;
+        let mut prev = PrevVertex::CameraOrDelta;
+        // Vertices so far: the light the next ray finds has this many bounces.
+        let mut bounces = 0;
         loop {
-            // Light with exactly (max_depth - depth + 1) bounces arrives here.
-            let counts_here = self.accumulate || depth == 1;
-            if counts_here {
-                l += throughput * self.one_bounce(scene, &point, rng);
+            let next = world.trace(&ray);
+            if self.counts(bounces) {
+                l += beta * self.found_emission(world, &ray, next.as_ref(), &prev);
             }
-            let picks_up_emitters = light_sampling && counts_here && scene.has_uncovered_emitters;
-            if depth <= 1 && !picks_up_emitters {
+            let Some(point) = next else {
+                return l;
+            };
+            bounces += 1;
+            if bounces > self.max_depth || point.bsdf.is_black() {
+                return l;
+            }
+            if self.counts(bounces) && !point.bsdf.is_delta() {
+                l += beta * self.one_bounce(world, &point, rng);
+            }
+            let last = bounces == self.max_depth;
+            if last && !self.last_ray_can_count(world, point.bsdf.is_delta()) {
                 return l;
             }
             let uc = rng.gen::<f32>();
-            let Some(sample) = point.bsdf.sample(point.wo, uc, next_2d(rng)) else {
+            let u = next_2d(rng);
+            let Some(sample) = point.bsdf.sample(point.wo, uc, u) else {
                 return l;
             };
-            if sample.pdf().is_nan() || sample.pdf() <= 0.0 || sample.wi.z <= 0.0 {
-                return l;
-            }
-            let wi = point.frame.to_world(sample.wi);
-            let Some(next) = scene.trace(&point.hit.spawn_ray(wi)) else {
-                return l;
-            };
-            let bounce_weight = sample.weight();
-            if picks_up_emitters && !scene.is_covered(&next) {
-                l += throughput * bounce_weight * next.emission;
-            }
-            if depth <= 1 {
-                return l;
-            }
-            // Russian roulette, never on the first indirect bounce.
-            let first_indirect = depth == self.max_depth;
-            let q = if self.russian_roulette && !first_indirect {
+            // Russian roulette, never on the first indirect bounce nor on
+            // the last ray, which only looks for emission.
+            let q = if self.russian_roulette && bounces > 1 && !last {
                 CONTINUE_PROBABILITY
             } else {
                 1.0
@@ -148,12 +133,130 @@ impl PathTracer {
             if q < 1.0 && rng.gen::<f32>() >= q {
                 return l;
             }
-            throughput *= bounce_weight / q;
-            if !throughput.is_finite() {
+            beta *= sample.weight() / q;
+            if beta == Rgb::ZERO || !beta.is_finite() {
                 return l;
             }
-            depth -= 1;
-            point = next;
+            prev = if sample.is_delta() {
+                PrevVertex::CameraOrDelta
+            } else {
+                PrevVertex::Scattering {
+                    p: point.hit.p,
+                    bsdf_pdf: sample.pdf(),
+                }
+            };
+            ray = point.hit.spawn_ray(point.frame.to_world(sample.wi));
         }
+    }
+
+    /// Direct light at `point`, by the chosen strategy.
+    #[doc(alias = "one_bounce_radiance")]
+    pub fn one_bounce<I: Intersector>(
+        &self,
+        world: &World<I>,
+        point: &ShadingPoint,
+        rng: &mut Sampler,
+    ) -> Rgb {
+        match self.direct {
+            DirectStrategy::Hemisphere(h) => h.estimate(world, point, rng),
+            DirectStrategy::Lights(d) => d.estimate(world, point, rng),
+        }
+    }
+
+    /// Whether the ray leaving the last vertex (whose BSDF is all delta
+    /// lobes when `delta`) can find emission that counts.
+    fn last_ray_can_count<I: Intersector>(&self, world: &World<I>, delta: bool) -> bool {
+        delta
+            || self.direct.mis()
+            || (matches!(self.direct, DirectStrategy::Lights(_))
+                && world.lights.has_unsampled_emitters())
+    }
+
+    /// Emission that `ray`, leaving `prev`, finds: the surface it hits
+    /// (`next`), the rectangle lights it crosses first, or the lights at
+    /// infinity if it escapes; each weighted by [`emission_weight`].
+    #[doc(alias = "zero_bounce_radiance")]
+    pub fn found_emission<I: Intersector>(
+        &self,
+        world: &World<I>,
+        ray: &Ray,
+        next: Option<&ShadingPoint>,
+        prev: &PrevVertex,
+    ) -> Rgb {
+        let lights = &world.lights;
+        let samples = |light: usize| match self.direct {
+            DirectStrategy::Lights(d) => d.samples_of(&lights.lights[light]),
+            DirectStrategy::Hemisphere(_) => 1,
+        };
+        let light_pdf = |light: usize, hit: Option<LightHit>| match *prev {
+            PrevVertex::Scattering { p, .. } => lights.lights[light].pdf_li(p, ray.dir, hit),
+            PrevVertex::CameraOrDelta => 0.0,
+        };
+        let weight = |emitter| emission_weight(&self.direct, prev, emitter);
+        let mut le = Rgb::ZERO;
+        let mut role = EmitterRole::Dark;
+        match next {
+            None => {
+                for (i, light) in lights.infinite() {
+                    let emitter = Emitter::Sampled {
+                        light_pdf: light_pdf(i, None),
+                        samples: samples(i),
+                    };
+                    le += light.escaped_radiance(ray.dir) * weight(emitter);
+                }
+            }
+            Some(point) if point.emission != Rgb::ZERO => {
+                role = lights.role(point.hit.primitive);
+                let emitter = match role {
+                    EmitterRole::Dark => None,
+                    EmitterRole::Shown => Some(Emitter::Shown),
+                    EmitterRole::Unsampled => Some(Emitter::Unsampled),
+                    EmitterRole::Sampled { light, member } => {
+                        let at = LightHit {
+                            point: point.hit.p,
+                            member,
+                        };
+                        Some(Emitter::Sampled {
+                            light_pdf: light_pdf(light as usize, Some(at)),
+                            samples: samples(light as usize),
+                        })
+                    }
+                };
+                if let Some(emitter) = emitter {
+                    le += point.emission * weight(emitter);
+                }
+            }
+            Some(_) => {}
+        }
+        // Rectangle lights are not geometry: rays find them here, in front
+        // of the surface hit (or on it, when it is their stand-in). After
+        // the camera or a delta bounce a rectangle shows itself unless a
+        // stand-in shows it; after scattering only multiple importance
+        // sampling has a use for it.
+        let after_scattering = matches!(prev, PrevVertex::Scattering { .. });
+        let t_hit = next.map_or(f32::INFINITY, |p| p.hit.t);
+        for (i, rect, has_stand_in) in lights.rects() {
+            let wanted = if after_scattering {
+                self.direct.mis()
+            } else {
+                !has_stand_in
+            };
+            let Some(t) = rect.hit_distance(ray).filter(|_| wanted) else {
+                continue;
+            };
+            let slack = if role == EmitterRole::Shown {
+                0.02 * rect.diagonal()
+            } else {
+                0.0
+            };
+            if t <= t_hit * (1.0 + 1e-3) + slack {
+                let emitter = Emitter::Sampled {
+                    light_pdf: light_pdf(i, None),
+                    samples: samples(i),
+                };
+                le += rect.radiance_at(t) * weight(emitter);
+            }
+        }
+        le
     }
 }

@@ -5,6 +5,7 @@
 pub mod color;
 pub mod float;
 pub mod frame;
+pub mod mis;
 pub mod rng;
 pub mod warp;
 

@@ -6,7 +6,12 @@
 //!   (concentric map) lifted by `z = sqrt(1 - x^2 - y^2)`, pdf `cos(theta) / pi`
 //!   (Malley's method; pbrt-v4, section A.5.3).
 //!
-//! Both follow from inverting the CDF of `z`, which is uniform on the
+//! - Uniform triangle: barycentrics `(1 - s, s (1 - u2), s u2)` with
+//!   `s = sqrt(u1)` (pbrt-v4, section 6.5.4; the square root undoes the
+//!   triangle's width growing linearly away from the first corner), density
+//!   `1 / A` per unit area of a triangle of area `A`.
+//!
+//! The first two follow from inverting the CDF of `z`, which is uniform on the
 //! sphere by Archimedes' hat-box theorem (pbrt-v4, section A.5).
 
 use glam::{Vec2, Vec3};
@@ -79,4 +84,17 @@ pub fn cosine_hemisphere_pdf(w: Vec3) -> f32 {
     } else {
         0.0
     }
+}
+
+/// Barycentric coordinates of a point uniform on a triangle, from `u` in
+/// `[0, 1)^2`: the point is `b.x p0 + b.y p1 + b.z p2`, with density
+/// [`uniform_triangle_pdf`] per unit area.
+pub fn sample_uniform_triangle(u: Vec2) -> Vec3 {
+    let s = u.x.sqrt();
+    Vec3::new(1.0 - s, s * (1.0 - u.y), s * u.y)
+}
+
+/// Density of [`sample_uniform_triangle`] per unit area on a triangle of area `area`.
+pub fn uniform_triangle_pdf(area: f32) -> f32 {
+    1.0 / area
 }

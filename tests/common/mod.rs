@@ -6,6 +6,7 @@ pub mod collada;
 pub mod course;
 pub mod exact;
 pub mod geometry;
+pub mod radiometry;
 pub mod scenes;
 pub mod stats;
 
@@ -13,5 +14,6 @@ pub use collada::*;
 pub use course::*;
 pub use exact::*;
 pub use geometry::*;
+pub use radiometry::*;
 pub use scenes::*;
 pub use stats::*;

@@ -4,7 +4,7 @@
 
 use glam::Vec3;
 use pathtracer::bvh::BvhAccel;
-use pathtracer::direct::{DirectHemisphere, DirectLights, SceneTracer};
+use pathtracer::direct::{DirectHemisphere, DirectLights};
 use pathtracer::global::{DirectStrategy, PathTracer};
 use pathtracer::intersect::{Intersector, Primitives, Ray};
 use pathtracer::math::luminance;
@@ -12,12 +12,14 @@ use pathtracer::math::rng::sampler;
 use pathtracer::math::Frame;
 use pathtracer::scene::normals::area_weighted_vertex_normals;
 use pathtracer::scene::{Light, Material, MaterialId, Scene, Sphere};
+use pathtracer::world::World;
 
 use super::stats::MeanEstimate;
 
 /// Direct light by sampling each light once.
 pub const LIGHTS: DirectStrategy = DirectStrategy::Lights(DirectLights {
     samples_per_light: 1,
+    mis: true,
 });
 /// Direct light by one uniform hemisphere direction.
 pub const HEMISPHERE: DirectStrategy = DirectStrategy::Hemisphere(DirectHemisphere { samples: 1 });
@@ -159,7 +161,7 @@ pub fn ray_towards(origin: Vec3, target: Vec3) -> Ray {
 /// (one random stream per call, seeded by `seed`): their mean and its
 /// standard error. Panics on a non-finite sample.
 pub fn estimate<I: Intersector>(
-    scene: &SceneTracer<I>,
+    scene: &World<I>,
     tracer: &PathTracer,
     ray: &Ray,
     n: usize,

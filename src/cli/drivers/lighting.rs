@@ -7,25 +7,26 @@ use super::{describe_or, prepare, report_render, write_film, Prepared, Result};
 use crate::adaptive::Adaptive;
 use crate::bvh::BvhAccel;
 use crate::cli::CourseArgs;
-use crate::direct::{DirectHemisphere, DirectLights, SceneTracer};
+use crate::direct::{DirectHemisphere, DirectLights};
 use crate::global::{DirectStrategy, PathTracer};
 use crate::intersect::Intersector;
 use crate::raygen::Camera;
 use crate::render::rendered::rate_image_path;
 use crate::render::{render_image, RenderSettings, Rendered};
 use crate::scene::Scene;
+use crate::world::World;
 
 /// Renders `tracer`'s radiance estimate for every pixel, up to `-s`
 /// samples each, stopping early where `adaptive` says so.
 pub fn render_lighting<I: Intersector>(
-    scene: &SceneTracer<I>,
+    world: &World<I>,
     tracer: &PathTracer,
     camera: &Camera,
     settings: &RenderSettings,
     adaptive: Option<Adaptive>,
 ) -> Rendered {
     render_image(camera, settings, adaptive, |ray, rng| {
-        tracer.radiance(scene, ray, rng)
+        tracer.radiance(world, ray, rng)
     })
 }
 
@@ -41,6 +42,7 @@ pub fn direct_strategy(args: &CourseArgs, scene: &Scene) -> DirectStrategy {
     } else {
         DirectStrategy::Lights(DirectLights {
             samples_per_light: args.light_samples,
+            mis: !args.no_mis,
         })
     }
 }
@@ -70,12 +72,9 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
         scene.source,
         start.elapsed().as_secs_f64()
     );
-    let mut tracer = SceneTracer::new(&scene, &accel);
-    if args.course_lights {
-        tracer = tracer.with_course_lights();
-    }
+    let world = World::with_options(&scene, &accel, args.world_options());
     let settings = args.render_settings();
-    let rendered = render_lighting(&tracer, &part.tracer, &camera, &settings, part.adaptive);
+    let rendered = render_lighting(&world, &part.tracer, &camera, &settings, part.adaptive);
     report_render(&rendered);
     match rendered.relative_error() {
         Some(e) => println!("noise: relative standard error {:.2} % (RMS of pixel standard errors / mean luminance)", 100.0 * e),

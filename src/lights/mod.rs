@@ -1,0 +1,189 @@
+//! The lights of a scene behind one interface (pbrt-v4's `Light`).
+//!
+//! Every kind answers the same questions:
+//!
+//! - [`Light::sample_li`]: a direction from a point `p` towards the light,
+//!   with the radiance arriving along it, the distance to the light and
+//!   the density: [`LightPdf::Delta`] for point and directional lights,
+//!   else per steradian at `p`;
+//! - [`Light::pdf_li`]: the density of a given direction (for multiple
+//!   importance sampling), given where the direction meets the light;
+//! - [`Light::escaped_radiance`]: the radiance a ray that escapes the scene
+//!   sees (lights at infinity);
+//! - [`Light::power`]: the radiant power, for choosing among lights.
+//!
+//! | kind | file | sampled by |
+//! | --- | --- | --- |
+//! | rectangle (CGL `<area>`) | [`rect`] | uniform area, `p_w = r^2 / (A cos_l)` |
+//! | point, spot | [`point`] | delta (the spot lights nothing, as in the course) |
+//! | directional, ambient sky | [`distant`] | delta; uniform hemisphere around +Y |
+//! | emissive triangles | [`triangles`] | power-proportional pick, uniform area |
+//!
+//! [`LightSet`] builds them once per render from the scene, and tells for
+//! each primitive how its emission is counted ([`EmitterRole`]).
+//! Densities are per steradian everywhere outside this module; the area
+//! densities of surfaces become solid-angle ones in one place,
+//! [`SurfacePoint::seen_from`].
+
+pub mod convention;
+pub mod distant;
+pub mod point;
+pub mod rect;
+pub mod sample;
+pub mod set;
+pub mod triangles;
+
+pub use convention::LightConvention;
+pub use distant::{AmbientSky, DirectionalLight};
+pub use point::{PointLight, SpotLight};
+pub use rect::RectLight;
+pub use sample::{LightPdf, LightSample, SurfacePoint};
+pub use set::{EmitterRole, LightSet};
+pub use triangles::EmissiveTriangles;
+
+use glam::{Vec2, Vec3};
+
+use crate::math::Rgb;
+use crate::scene::Light as SceneLight;
+
+/// Where a ray met a light that has an area: the point, and which member
+/// of the light (which triangle of [`EmissiveTriangles`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightHit {
+    pub point: Vec3,
+    pub member: u32,
+}
+
+/// One light of the scene.
+#[derive(Clone, Debug)]
+pub enum Light {
+    Rect(RectLight),
+    Point(PointLight),
+    Spot(SpotLight),
+    Directional(DirectionalLight),
+    Sky(AmbientSky),
+    Triangles(EmissiveTriangles),
+}
+
+impl Light {
+    /// A light of the scene file behind this interface, its samples
+    /// weighted by `convention`.
+    pub fn from_scene(light: &SceneLight, convention: LightConvention) -> Light {
+        match *light {
+            SceneLight::Area {
+                radiance,
+                center,
+                direction,
+                dim_x,
+                dim_y,
+            } => Light::Rect(RectLight {
+                radiance,
+                center,
+                normal: direction,
+                dim_x,
+                dim_y,
+                convention,
+            }),
+            SceneLight::Point {
+                intensity,
+                position,
+            } => Light::Point(PointLight {
+                intensity,
+                position,
+                convention,
+            }),
+            SceneLight::Directional {
+                radiance,
+                direction,
+            } => Light::Directional(DirectionalLight {
+                radiance,
+                direction,
+            }),
+            SceneLight::Ambient { radiance } => Light::Sky(AmbientSky { radiance }),
+            SceneLight::Spot {
+                intensity,
+                position,
+                direction,
+            } => Light::Spot(SpotLight {
+                intensity,
+                position,
+                direction,
+            }),
+        }
+    }
+
+    /// Light arriving at `p` along a sampled direction: `uc` in `[0, 1)`
+    /// picks a member of a light made of several shapes, `u` in `[0, 1)^2`
+    /// the point or direction. `None` when the sample carries no light.
+    #[doc(alias = "sample_L")]
+    pub fn sample_li(&self, p: Vec3, uc: f32, u: Vec2) -> Option<LightSample> {
+        match self {
+            Light::Rect(l) => l.sample_li(p, u),
+            Light::Point(l) => l.sample_li(p),
+            Light::Spot(_) => None,
+            Light::Directional(l) => Some(l.sample_li()),
+            Light::Sky(l) => l.sample_li(u),
+            Light::Triangles(l) => l.sample_li(p, uc, u),
+        }
+    }
+
+    /// Density per steradian with which [`Self::sample_li`] picks the unit
+    /// direction `wi` from `p`. `hit` is where the ray met the light, for
+    /// lights made of scene geometry (emissive triangles); the rectangle
+    /// finds its own crossing, lights at infinity need none. 0 for delta lights.
+    pub fn pdf_li(&self, p: Vec3, wi: Vec3, hit: Option<LightHit>) -> f32 {
+        match self {
+            Light::Rect(l) => l.pdf_li(p, wi),
+            Light::Sky(l) => l.pdf_li(wi),
+            Light::Triangles(l) => hit.map_or(0.0, |h| l.pdf_li(p, h.member, h.point)),
+            Light::Point(_) | Light::Spot(_) | Light::Directional(_) => 0.0,
+        }
+    }
+
+    /// Radiance seen by a ray that escapes the scene in the unit direction `w`.
+    #[doc(alias = "Le")]
+    pub fn escaped_radiance(&self, w: Vec3) -> Rgb {
+        match self {
+            Light::Sky(l) => l.escaped_radiance(w),
+            _ => Rgb::ZERO,
+        }
+    }
+
+    /// Radiant power, per channel; lights at infinity count what crosses a
+    /// scene of radius `scene_radius`.
+    pub fn power(&self, scene_radius: f32) -> Rgb {
+        match self {
+            Light::Rect(l) => l.power(),
+            Light::Point(l) => l.power(),
+            Light::Spot(_) => Rgb::ZERO,
+            Light::Directional(l) => l.power(scene_radius),
+            Light::Sky(l) => l.power(scene_radius),
+            Light::Triangles(l) => l.power(),
+        }
+    }
+
+    /// Whether the light is a delta distribution (sampled once, never hit).
+    pub fn is_delta(&self) -> bool {
+        matches!(
+            self,
+            Light::Point(_) | Light::Spot(_) | Light::Directional(_)
+        )
+    }
+
+    /// Whether the light is infinitely far away (seen by escaping rays).
+    pub fn is_infinite(&self) -> bool {
+        matches!(self, Light::Directional(_) | Light::Sky(_))
+    }
+
+    /// A short lower-case name of the light's kind.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Light::Rect(_) => "area",
+            Light::Point(_) => "point",
+            Light::Spot(_) => "spot",
+            Light::Directional(_) => "directional",
+            Light::Sky(_) => "ambient",
+            Light::Triangles(_) => "emissive triangles",
+        }
+    }
+}

@@ -1,0 +1,123 @@
+//! The course's area light: a one-sided rectangle
+//! `center + s dim_x + t dim_y`, `s, t` in `[-1/2, 1/2]`, of area
+//! `A = |dim_x| |dim_y|`, emitting radiance `L` towards the side its unit
+//! normal `n` points to.
+//!
+//! Sampling: a point `q` uniform on the rectangle, density `1 / A` per
+//! area, seen from `p` at distance `r` under the light's cosine
+//! `cos_l = n . (p - q) / r`:
+//!
+//! ```text
+//! p_w = r^2 / (A cos_l)        (per steradian at p)
+//! ```
+//!
+//! The density of a given direction (for multiple importance sampling)
+//! intersects the ray with the rectangle: `p_w` at the point it crosses,
+//! 0 if it misses or arrives from behind. Power: `Phi = pi A L`.
+//!
+//! The rectangle is not geometry: the camera does not see it (the course
+//! files place an emissive mesh there for that), but a BSDF-sampled ray
+//! meets it through [`RectLight::hit_distance`], so that both strategies
+//! of multiple importance sampling can find every point of it.
+//!
+//! The course's starter weights a sample by `r^2 / (A r cos_l)` (it takes
+//! the light's cosine from the unnormalised `q - p`); with
+//! [`LightConvention::Course`] each sample is `r` times brighter, as there.
+
+use glam::{Vec2, Vec3};
+
+use super::{LightConvention, LightSample, SurfacePoint};
+use crate::intersect::Ray;
+use crate::math::Rgb;
+
+/// A one-sided rectangular area light.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RectLight {
+    pub radiance: Rgb,
+    pub center: Vec3,
+    /// Unit normal of the emitting side.
+    pub normal: Vec3,
+    pub dim_x: Vec3,
+    pub dim_y: Vec3,
+    pub convention: LightConvention,
+}
+
+impl RectLight {
+    pub fn area(&self) -> f32 {
+        self.dim_x.length() * self.dim_y.length()
+    }
+
+    /// The longer diagonal of the rectangle.
+    pub fn diagonal(&self) -> f32 {
+        (self.dim_x + self.dim_y)
+            .length()
+            .max((self.dim_x - self.dim_y).length())
+    }
+
+    /// A point uniform on the rectangle, seen from `p`.
+    #[doc(alias = "sample_L")]
+    pub fn sample_li(&self, p: Vec3, u: Vec2) -> Option<LightSample> {
+        let area = self.area();
+        if area.is_nan() || area <= 0.0 {
+            return None;
+        }
+        let q = self.center + (u.x - 0.5) * self.dim_x + (u.y - 0.5) * self.dim_y;
+        let point = SurfacePoint {
+            q,
+            normal: self.normal,
+            two_sided: false,
+            radiance: self.radiance,
+            area_pdf: 1.0 / area,
+        };
+        let mut sample = point.seen_from(p)?;
+        sample.radiance *= self.convention.area_factor(sample.distance);
+        Some(sample)
+    }
+
+    /// Where the ray from `p` along the unit `wi` crosses the rectangle's
+    /// emitting side: the distance, or `None`.
+    pub fn crossing(&self, p: Vec3, wi: Vec3) -> Option<f32> {
+        let denom = self.normal.dot(wi);
+        if denom.is_nan() || denom >= 0.0 {
+            return None;
+        }
+        let t = self.normal.dot(self.center - p) / denom;
+        let local = p + t * wi - self.center;
+        let (sx, sy) = (self.dim_x.length_squared(), self.dim_y.length_squared());
+        let inside =
+            (local.dot(self.dim_x) / sx).abs() <= 0.5 && (local.dot(self.dim_y) / sy).abs() <= 0.5;
+        (t > 0.0 && t.is_finite() && inside).then_some(t)
+    }
+
+    /// The distance at which `ray` meets the emitting side within its
+    /// interval, if it does.
+    pub fn hit_distance(&self, ray: &Ray) -> Option<f32> {
+        self.crossing(ray.origin, ray.dir)
+            .filter(|&t| t >= ray.t_min && t <= ray.t_max)
+    }
+
+    /// Density per steradian with which [`Self::sample_li`] picks `wi` from `p`.
+    pub fn pdf_li(&self, p: Vec3, wi: Vec3) -> f32 {
+        let Some(t) = self.crossing(p, wi) else {
+            return 0.0;
+        };
+        let area = self.area();
+        let cos_light = -self.normal.dot(wi);
+        if area > 0.0 && cos_light > 0.0 {
+            t * t / (area * cos_light)
+        } else {
+            0.0
+        }
+    }
+
+    /// Radiance the light sends along a ray that meets it at distance `t`
+    /// (the course's convention scales it as it scales samples).
+    pub fn radiance_at(&self, t: f32) -> Rgb {
+        self.radiance * self.convention.area_factor(t)
+    }
+
+    /// Radiant power, `pi A L` per channel.
+    pub fn power(&self) -> Rgb {
+        std::f32::consts::PI * self.area() * self.radiance
+    }
+}

@@ -1,0 +1,319 @@
+//! The light set of a render: every light of the scene behind the
+//! [`Light`] interface, and for every primitive the way its emission is
+//! counted, so that light is counted exactly once.
+//!
+//! Scene lights become [`Light`]s one to one. Emissive surfaces fall into
+//! three roles ([`EmitterRole`]):
+//!
+//! - **stand-in**: the course's Cornell boxes hold an area light and, at the
+//!   same place, an emissive `light` mesh of the same radiance. The light
+//!   lights the scene; the mesh shows it to the camera and through delta
+//!   bounces (a mirror, glass), where light sampling cannot reach. A
+//!   material is a stand-in when it is emissive and every triangle using
+//!   it lies within reach of an area light of the same radiance: each
+//!   vertex closer to the light's centre than the light's half-diagonal
+//!   plus 10 % of it, and within 1 % of that diagonal of its plane.
+//! - **sampled**: every other emissive triangle is a member of one more
+//!   light, [`EmissiveTriangles`], sampled like an area light.
+//! - **unsampled**: emissive spheres; no light samples them, so a ray that
+//!   finds one always counts it.
+//!
+//! With the course's light convention (`--course-lights`) only the scene's
+//! lights light the scene, as in the course's starter: every emitter that
+//! stands in for no light is then shown to the camera but lights nothing.
+
+use glam::Vec3;
+
+use super::{EmissiveTriangles, Light, LightConvention, RectLight};
+use crate::math::Rgb;
+use crate::scene::{Light as SceneLight, Material, Scene};
+
+/// How the emission of a primitive is counted when a ray hits it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum EmitterRole {
+    /// The surface emits nothing.
+    Dark,
+    /// Counted only after the camera or a delta bounce: it shows a light
+    /// that light sampling covers everywhere else.
+    Shown,
+    /// Member `member` of light `light`, which samples it: counted with a
+    /// multiple importance sampling weight.
+    Sampled { light: u32, member: u32 },
+    /// Nothing samples it: counted wherever a ray finds it.
+    Unsampled,
+}
+
+/// The lights of a render and the roles of its emissive primitives.
+#[derive(Clone, Debug, Default)]
+pub struct LightSet {
+    pub lights: Vec<Light>,
+    /// Role of each primitive (triangles, then spheres); empty when
+    /// nothing in the scene emits.
+    roles: Vec<EmitterRole>,
+    /// Indices of the rectangle lights, which rays test, and whether an
+    /// emissive surface shows each to the camera.
+    rects: Vec<(usize, bool)>,
+    /// Indices of the lights at infinity.
+    infinite: Vec<usize>,
+    has_unsampled: bool,
+    scene_radius: f32,
+}
+
+impl LightSet {
+    /// The lights of `scene` weighted by `convention`.
+    pub fn new(scene: &Scene, convention: LightConvention) -> Self {
+        let mut lights: Vec<Light> = scene
+            .lights
+            .iter()
+            .map(|l| Light::from_scene(l, convention))
+            .collect();
+        let stand_ins = StandIns::of(scene);
+        let stand_in = &stand_ins.materials;
+        let emits = |m: usize| scene.materials[m].emission() != Rgb::ZERO;
+        let course = convention == LightConvention::Course;
+        let sampled: Vec<bool> = (0..scene.materials.len())
+            .map(|m| emits(m) && !stand_in[m] && !course)
+            .collect();
+        let triangles = EmissiveTriangles::new(scene, &sampled);
+        let triangle_count = scene.mesh.triangles.len();
+        let mut roles = Vec::new();
+        if (0..scene.materials.len()).any(emits) {
+            let role_of_material = |m: u32| {
+                let m = m as usize;
+                match scene.materials.get(m) {
+                    Some(_) if !emits(m) => EmitterRole::Dark,
+                    Some(_) if stand_in[m] || course => EmitterRole::Shown,
+                    Some(_) => EmitterRole::Unsampled,
+                    None => EmitterRole::Dark,
+                }
+            };
+            roles.extend(scene.mesh.materials.iter().map(|&m| role_of_material(m)));
+            roles.extend(scene.spheres.iter().map(|s| role_of_material(s.material)));
+            if !triangles.is_empty() {
+                let light = lights.len() as u32;
+                for (member, &t) in triangles.triangle_ids().iter().enumerate() {
+                    roles[t as usize] = EmitterRole::Sampled {
+                        light,
+                        member: member as u32,
+                    };
+                }
+            }
+            // Sampled materials' triangles left out of the light (no area)
+            // emit nothing anyone could see.
+            for role in roles.iter_mut().take(triangle_count) {
+                if *role == EmitterRole::Unsampled {
+                    *role = EmitterRole::Dark;
+                }
+            }
+        }
+        if !triangles.is_empty() {
+            lights.push(Light::Triangles(triangles));
+        }
+        let indices = |keep: fn(&Light) -> bool| -> Vec<usize> {
+            (0..lights.len()).filter(|&i| keep(&lights[i])).collect()
+        };
+        LightSet {
+            rects: indices(|l| matches!(l, Light::Rect(_)))
+                .into_iter()
+                .map(|i| (i, stand_ins.lights[i]))
+                .collect(),
+            infinite: indices(Light::is_infinite),
+            has_unsampled: roles.contains(&EmitterRole::Unsampled),
+            roles,
+            scene_radius: scene_radius(scene),
+            lights,
+        }
+    }
+
+    /// How the emission of primitive `primitive` is counted.
+    pub fn role(&self, primitive: u32) -> EmitterRole {
+        self.roles
+            .get(primitive as usize)
+            .copied()
+            .unwrap_or(EmitterRole::Dark)
+    }
+
+    /// The rectangle lights, with their indices and whether a stand-in
+    /// shows them.
+    pub fn rects(&self) -> impl Iterator<Item = (usize, &RectLight, bool)> + '_ {
+        self.rects
+            .iter()
+            .filter_map(|&(i, shown)| match &self.lights[i] {
+                Light::Rect(r) => Some((i, r, shown)),
+                _ => None,
+            })
+    }
+
+    /// The lights at infinity, with their indices.
+    pub fn infinite(&self) -> impl Iterator<Item = (usize, &Light)> + '_ {
+        self.infinite.iter().map(|&i| (i, &self.lights[i]))
+    }
+
+    /// Whether some surface emits light that no light samples.
+    pub fn has_unsampled_emitters(&self) -> bool {
+        self.has_unsampled
+    }
+
+    /// Radius of a sphere around the scene's geometry, for the power of
+    /// lights at infinity.
+    pub fn scene_radius(&self) -> f32 {
+        self.scene_radius
+    }
+
+    /// The emissive triangles sampled as a light, if any.
+    pub fn emissive_triangles(&self) -> Option<&EmissiveTriangles> {
+        self.lights.iter().find_map(|l| match l {
+            Light::Triangles(t) => Some(t),
+            _ => None,
+        })
+    }
+}
+
+/// Half the diagonal of the box around the scene's vertices and spheres.
+fn scene_radius(scene: &Scene) -> f32 {
+    let mut lo = Vec3::splat(f32::INFINITY);
+    let mut hi = Vec3::splat(f32::NEG_INFINITY);
+    for &p in &scene.mesh.positions {
+        lo = lo.min(p);
+        hi = hi.max(p);
+    }
+    for s in &scene.spheres {
+        lo = lo.min(s.center - Vec3::splat(s.radius));
+        hi = hi.max(s.center + Vec3::splat(s.radius));
+    }
+    let r = 0.5 * (hi - lo).length();
+    if r.is_finite() {
+        r
+    } else {
+        0.0
+    }
+}
+
+/// Which emissive surfaces stand in for an area light (see the module
+/// docs): per material, whether it is a stand-in; per scene light, whether
+/// some stand-in shows it. Spheres are never stand-ins, and a material no
+/// primitive uses is not one.
+pub struct StandIns {
+    pub materials: Vec<bool>,
+    pub lights: Vec<bool>,
+}
+
+impl StandIns {
+    pub fn of(scene: &Scene) -> Self {
+        let mut proxy: Vec<bool> = scene
+            .materials
+            .iter()
+            .map(|m| matches!(m, Material::Emission { .. }))
+            .collect();
+        // Per material, the lights every one of its triangles is near.
+        let mut near: Vec<Vec<bool>> = vec![vec![true; scene.lights.len()]; proxy.len()];
+        for (corners, &material) in scene.mesh.triangles.iter().zip(&scene.mesh.materials) {
+            let m = material as usize;
+            let Some(&Material::Emission { radiance }) = scene.materials.get(m) else {
+                continue;
+            };
+            for (light, near_it) in scene.lights.iter().zip(near[m].iter_mut()) {
+                *near_it &= shows(scene, corners, radiance, light);
+            }
+            proxy[m] &= near[m].iter().any(|&n| n);
+        }
+        let mut used = vec![false; scene.materials.len()];
+        for &m in &scene.mesh.materials {
+            if let Some(u) = used.get_mut(m as usize) {
+                *u = true;
+            }
+        }
+        for sphere in &scene.spheres {
+            if let Some(p) = proxy.get_mut(sphere.material as usize) {
+                *p = false;
+            }
+        }
+        let materials: Vec<bool> = proxy.iter().zip(&used).map(|(&p, &u)| p && u).collect();
+        let lights = (0..scene.lights.len())
+            .map(|l| (0..materials.len()).any(|m| materials[m] && near[m][l]))
+            .collect();
+        StandIns { materials, lights }
+    }
+}
+
+/// Whether a triangle of emitted `radiance` lies on the area light `light`
+/// (each corner within 0.55 of the light's diagonal from its centre and
+/// within 1 % of the diagonal of its plane) with the same radiance.
+fn shows(scene: &Scene, corners: &[u32; 3], radiance: Rgb, light: &SceneLight) -> bool {
+    let SceneLight::Area {
+        radiance: light_radiance,
+        center,
+        direction,
+        dim_x,
+        dim_y,
+    } = *light
+    else {
+        return false;
+    };
+    let diagonal = (dim_x + dim_y).length().max((dim_x - dim_y).length());
+    light_radiance == radiance
+        && corners.iter().all(|&v| {
+            let q = scene.mesh.positions[v as usize] - center;
+            q.length() <= 0.55 * diagonal && q.dot(direction).abs() <= 0.01 * diagonal
+        })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::builtin::cornell_box;
+
+    #[test]
+    fn the_cornell_box_light_quad_stands_in_for_its_area_light() {
+        let scene = cornell_box();
+        let stand_ins = StandIns::of(&scene);
+        let proxies = stand_ins.materials.clone();
+        let emissive: Vec<bool> = scene
+            .materials
+            .iter()
+            .map(|m| matches!(m, Material::Emission { .. }))
+            .collect();
+        assert_eq!(proxies, emissive, "exactly the emissive quad is a stand-in");
+        assert!(proxies.iter().any(|&p| p));
+        assert_eq!(stand_ins.lights, vec![true]);
+        let set = LightSet::new(&scene, LightConvention::Physical);
+        assert_eq!(set.lights.len(), 1, "the quad adds no light");
+        let roles: Vec<EmitterRole> = (0..scene.mesh.triangles.len() as u32)
+            .map(|t| set.role(t))
+            .collect();
+        assert_eq!(
+            roles.iter().filter(|&&r| r == EmitterRole::Shown).count(),
+            2
+        );
+        assert!(!roles
+            .iter()
+            .any(|r| matches!(r, EmitterRole::Sampled { .. })));
+    }
+
+    #[test]
+    fn an_emitter_without_a_matching_light_is_sampled_as_one() {
+        let mut scene = cornell_box();
+        // A different radiance, or no area light at all: the quad lights the scene itself.
+        if let SceneLight::Area { radiance, .. } = &mut scene.lights[0] {
+            *radiance *= 2.0;
+        }
+        let stand_ins = StandIns::of(&scene);
+        assert!(stand_ins.materials.iter().all(|&p| !p));
+        assert_eq!(stand_ins.lights, vec![false]);
+        scene.lights.clear();
+        assert!(StandIns::of(&scene).materials.iter().all(|&p| !p));
+        let set = LightSet::new(&scene, LightConvention::Physical);
+        assert_eq!(
+            set.emissive_triangles().map(EmissiveTriangles::len),
+            Some(2)
+        );
+        assert!(!set.has_unsampled_emitters());
+        let sampled = (0..scene.mesh.triangles.len() as u32)
+            .filter(|&t| matches!(set.role(t), EmitterRole::Sampled { light: 0, .. }))
+            .count();
+        assert_eq!(sampled, 2);
+        // The course's starter samples scene lights only: the quad is just shown.
+        let course = LightSet::new(&scene, LightConvention::Course);
+        assert!(course.lights.is_empty());
+    }
+}

@@ -1,0 +1,86 @@
+//! The scene as the renderer sees it: an intersector over the scene's
+//! primitives, the materials, the light set, and hits prepared for
+//! shading ([`ShadingPoint`]). Every part from 3 on renders through a [`World`].
+
+pub mod shading_point;
+
+pub use shading_point::ShadingPoint;
+
+use glam::Vec3;
+
+use crate::intersect::{Intersector, Ray};
+use crate::lights::{LightConvention, LightSet};
+use crate::materials::BsdfOptions;
+use crate::math::Rgb;
+use crate::scene::{Material, Scene};
+
+/// Choices about the scene's appearance that a render makes once.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct WorldOptions {
+    /// How light samples are weighted (`--course-lights`).
+    pub light_convention: LightConvention,
+    /// Fresnel model and microfacet sampling for every BSDF.
+    pub bsdf: BsdfOptions,
+}
+
+/// A scene ready to be traced: intersector, materials and lights.
+pub struct World<'a, I> {
+    pub intersector: I,
+    pub materials: &'a [Material],
+    pub lights: LightSet,
+    pub bsdf_options: BsdfOptions,
+}
+
+impl<'a, I: Intersector> World<'a, I> {
+    /// `scene` with its lights weighted physically and default BSDF options.
+    pub fn new(scene: &'a Scene, intersector: I) -> Self {
+        Self::with_options(scene, intersector, WorldOptions::default())
+    }
+
+    pub fn with_options(scene: &'a Scene, intersector: I, options: WorldOptions) -> Self {
+        World {
+            intersector,
+            materials: &scene.materials,
+            lights: LightSet::new(scene, options.light_convention),
+            bsdf_options: options.bsdf,
+        }
+    }
+
+    /// The first surface along `ray`, prepared for shading towards the ray's origin.
+    pub fn trace(&self, ray: &Ray) -> Option<ShadingPoint> {
+        let hit = self.intersector.intersect(ray)?;
+        let material = self
+            .materials
+            .get(hit.material as usize)
+            .copied()
+            .unwrap_or(Material::DEFAULT);
+        Some(ShadingPoint::new(
+            hit,
+            -ray.dir,
+            &material,
+            self.bsdf_options,
+        ))
+    }
+
+    /// Radiance arriving along `ray` straight from an emitter: the emission
+    /// of the first surface it hits, or what the lights at infinity show
+    /// if it escapes.
+    pub fn emitted(&self, ray: &Ray) -> Rgb {
+        match self.intersector.intersect(ray) {
+            Some(hit) => self
+                .materials
+                .get(hit.material as usize)
+                .map_or(Rgb::ZERO, Material::emission),
+            None => self.escaped(ray.dir),
+        }
+    }
+
+    /// Radiance of the lights at infinity along the unit direction `w` of
+    /// a ray that escapes.
+    pub fn escaped(&self, w: Vec3) -> Rgb {
+        self.lights
+            .infinite()
+            .map(|(_, l)| l.escaped_radiance(w))
+            .sum()
+    }
+}
