@@ -107,7 +107,7 @@ fn integrate_radial(family: &Family, r: (f64, f64), p: (f64, f64), n: usize, m: 
 }
 
 /// [`integrate_radial`] of a lossy family over one cell of the histogram:
-/// on `SUB x SUB` points, or on `4 SUB x 4 SUB` for a cell the horizon
+/// on `SUB` squared points, or on `4 SUB` squared for a cell the horizon
 /// crosses (where the density drops to 0, some points are 0 and some are
 /// not): the midpoint rule's error there, proportional to the point
 /// spacing, would otherwise show in the chi-square statistic of a
@@ -402,11 +402,11 @@ fn goodness_of_fit(family: &Family, stream: u64) -> (common::ChiSquare, u64) {
 /// cap finely, then rings of doubling angular radius out to the south pole.
 fn integrate_sphere(family: &Family) -> f64 {
     let (_, cap) = radial_range(family);
-    let mut total = integrate_radial(family, (0.0, cap), (0.0, 2.0 * PI), 600, 600);
+    let mut total = integrate_radial(family, (0.0, cap), (0.0, 2.0 * PI), 400, 400);
     let mut theta = cap;
     while theta < PI {
         let next = (2.0 * theta).min(PI);
-        total += integrate_radial(family, (theta, next), (0.0, 2.0 * PI), 200, 600);
+        total += integrate_radial(family, (theta, next), (0.0, 2.0 * PI), 100, 400);
         theta = next;
     }
     total
@@ -452,9 +452,9 @@ fn every_density_integrates_to_one() {
             continue;
         }
         // Where the density lives, finely; below cos_min, coarsely (it must be 0).
-        let inside = integrate(&family, (family.cos_min, 1.0), (0.0, 2.0 * PI), 1500, 1500);
+        let inside = integrate(family, (family.cos_min, 1.0), (0.0, 2.0 * PI), 1500, 1500);
         let outside = if family.cos_min > -1.0 {
-            integrate(&family, (-1.0, family.cos_min), (0.0, 2.0 * PI), 200, 400)
+            integrate(family, (-1.0, family.cos_min), (0.0, 2.0 * PI), 200, 400)
         } else {
             0.0
         };
@@ -512,7 +512,12 @@ fn every_sampler_matches_its_density_chi_square() {
 #[test]
 fn the_checks_reject_wrong_densities() {
     let mut wrong = Vec::new();
-    for family in families() {
+    // Of the conductor families, those of alpha 0.1 (both strategies, every
+    // angle) stand for the rest, to keep the run short.
+    let sample_of_families = families()
+        .into_iter()
+        .filter(|f| !f.lossy || f.name.contains("alpha 0.1,"));
+    for family in sample_of_families {
         let Family {
             name,
             sample,
