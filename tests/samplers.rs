@@ -14,6 +14,18 @@
 //!    counts are *not* renormalised, so a density off by a constant factor
 //!    fails too.
 //!
+//! Lossy families (the microfacet conductor, which discards a direction
+//! reflected below the surface) have a sub-density: its integral over the
+//! sphere is the probability that a draw is kept, not 1. For them check 1
+//! compares the integral over the whole sphere with the fraction of draws
+//! kept (a z-test), and check 3 adds one cell for everything off the grid,
+//! discarded draws included, whose expected count is `N` minus the grid's
+//! (so lost draws are counted against the density too). Their grid is a
+//! cap around the mirror direction whose radius scales with the roughness
+//! (`4 alpha`), so that even the narrow lobe of `alpha = 0.01` spreads
+//! over all its rings (about 2 % of the draws of a narrow lobe fall
+//! outside the cap, in the extra cell).
+//!
 //! Seeds are fixed. The whole table is one test of significance
 //! [`ALPHA`] = 1e-4, split evenly among the families (Bonferroni), so a
 //! correct sampler fails it less than once in 10^4 seeds.
@@ -31,7 +43,7 @@ use std::f64::consts::PI;
 use common::{chi_square, rect_corners, rect_light, ALPHA};
 use glam::{Vec2, Vec3};
 use pathtracer::lights::{Light as SampledLight, LightConvention, LightPdf};
-use pathtracer::materials::Diffuse;
+use pathtracer::materials::{Conductor, Diffuse, MicrofacetSampling};
 use pathtracer::math::rng::{next_2d, sampler};
 use pathtracer::math::warp::{
     cosine_hemisphere_pdf, sample_cosine_hemisphere, sample_uniform_hemisphere,
@@ -50,9 +62,96 @@ struct Family {
     pdf: Box<dyn Fn(Vec3) -> f64>,
     /// Frame of the histogram grid (its +Z is the grid's pole).
     frame: Frame,
-    /// The density vanishes for `cos theta < cos_min` in that frame, so the
-    /// grid covers `[cos_min, 1] x [0, 2 pi)`.
+    /// The grid covers `[cos_min, 1] x [0, 2 pi)`; unless `lossy`, the
+    /// density vanishes for `cos theta < cos_min` in that frame.
     cos_min: f64,
+    /// Whether the sampler may refuse draws and sample off the grid: the
+    /// density is then a sub-density of the kept draws. A lossy family's
+    /// grid is uniform in `theta` rather than `cos theta` (see
+    /// [`radial`]).
+    lossy: bool,
+}
+
+/// The radial grid coordinate of `w` and its `phi`: `cos theta` (rings of
+/// equal solid angle), or for a lossy family `theta` itself, computed from
+/// the local `x, y` so that it stays accurate near the pole. Rings uniform
+/// in `theta` resolve a narrow lobe near its centre: the lobe of a grazing,
+/// smooth conductor is a thin streak through the mirror direction, which
+/// the innermost rings of equal solid angle (uniform in `theta^2`) blur.
+fn radial(family: &Family, w: Vec3) -> (f64, f64) {
+    if !family.lossy {
+        return polar(&family.frame, w);
+    }
+    let l = family.frame.to_local(w).as_dvec3();
+    let phi = l.y.atan2(l.x).rem_euclid(2.0 * PI);
+    (l.x.hypot(l.y).atan2(l.z), phi)
+}
+
+/// The range of the radial grid coordinate, `[cos_min, 1]` or
+/// `[0, acos(cos_min)]`.
+fn radial_range(family: &Family) -> (f64, f64) {
+    if family.lossy {
+        (0.0, family.cos_min.clamp(-1.0, 1.0).acos())
+    } else {
+        (family.cos_min, 1.0)
+    }
+}
+
+/// Midpoint-rule integral of `family.pdf` over `[r0, r1] x [p0, p1]` in
+/// the family's radial coordinate and `phi`, `n x m` points.
+fn integrate_radial(family: &Family, r: (f64, f64), p: (f64, f64), n: usize, m: usize) -> f64 {
+    if !family.lossy {
+        return integrate(family, r, p, n, m);
+    }
+    integrate_angle(family, r, p, n, m).0
+}
+
+/// [`integrate_radial`] of a lossy family over one cell of the histogram:
+/// on `SUB` squared points, or on `4 SUB` squared for a cell the horizon
+/// crosses (where the density drops to 0, some points are 0 and some are
+/// not): the midpoint rule's error there, proportional to the point
+/// spacing, would otherwise show in the chi-square statistic of a
+/// grazing lobe cut by the horizon.
+fn integrate_cell(family: &Family, r: (f64, f64), p: (f64, f64)) -> f64 {
+    if !family.lossy {
+        return integrate(family, r, p, SUB, SUB);
+    }
+    let (value, zeros) = integrate_angle(family, r, p, SUB, SUB);
+    if zeros > 0 && zeros < SUB * SUB {
+        integrate_angle(family, r, p, 4 * SUB, 4 * SUB).0
+    } else {
+        value
+    }
+}
+
+/// Midpoint-rule integral over `[t0, t1] x [p0, p1]` in `(theta, phi)`,
+/// and the number of points where the density is 0.
+fn integrate_angle(
+    family: &Family,
+    r: (f64, f64),
+    p: (f64, f64),
+    n: usize,
+    m: usize,
+) -> (f64, usize) {
+    // d omega = sin(theta) d theta d phi.
+    let ((t0, t1), (p0, p1)) = (r, p);
+    let (dt, dp) = ((t1 - t0) / n as f64, (p1 - p0) / m as f64);
+    let mut sum = 0.0;
+    let mut zeros = 0;
+    for i in 0..n {
+        let t = t0 + (i as f64 + 0.5) * dt;
+        let (st, ct) = t.sin_cos();
+        for j in 0..m {
+            let (sp, cp) = (p0 + (j as f64 + 0.5) * dp).sin_cos();
+            let w = family
+                .frame
+                .to_world(Vec3::new((st * cp) as f32, (st * sp) as f32, ct as f32));
+            let pdf = (family.pdf)(w);
+            zeros += usize::from(pdf == 0.0);
+            sum += pdf * st;
+        }
+    }
+    (sum * dt * dp, zeros)
 }
 
 /// `cos theta` and `phi` in `[0, 2 pi)` of `w` in `frame`.
@@ -124,6 +223,7 @@ fn light_family(name: &str, light: Light, p: Vec3) -> Family {
         pdf: Box::new(move |w| queried.pdf_li(p, w, None) as f64),
         frame,
         cos_min,
+        lossy: false,
     }
 }
 
@@ -139,7 +239,50 @@ fn warp_family(name: &str, sample: fn(Vec2) -> Vec3, pdf: fn(Vec3) -> f32, cos_m
         pdf: Box::new(move |w| pdf(w) as f64),
         frame: Frame::from_z(Vec3::Z),
         cos_min,
+        lossy: false,
     }
+}
+
+/// The rough conductor's direction sampler for `wo` at `cos theta_o =
+/// cos_o` (azimuth 2 rad, so that the visible-normal sampler's rotation is
+/// exercised), gridded on a cap of radius `4 alpha` around the mirror
+/// direction.
+fn conductor_family(alpha: f32, cos_o: f32, sampling: MicrofacetSampling) -> Family {
+    let sin_o = (1.0 - cos_o * cos_o).max(0.0).sqrt();
+    let wo = Vec3::new(sin_o * 2f32.cos(), sin_o * 2f32.sin(), cos_o);
+    let copper = Conductor::new(
+        alpha,
+        Vec3::new(0.2, 1.0, 1.2),
+        Vec3::new(3.0, 2.5, 2.4),
+        sampling,
+    );
+    Family {
+        name: format!("conductor, {sampling:?}, alpha {alpha}, wo.z {cos_o}"),
+        sample: Box::new(move |u| {
+            let s = copper.sample(wo, u)?;
+            Some((s.wi, s.pdf() as f64))
+        }),
+        pdf: Box::new(move |w| copper.pdf(wo, w) as f64),
+        frame: Frame::from_z(Vec3::new(-wo.x, -wo.y, wo.z)),
+        cos_min: (4.0 * f64::from(alpha)).min(PI).cos(),
+        lossy: true,
+    }
+}
+
+/// Conductor families: both strategies, smooth to rough, normal to grazing.
+fn conductor_families() -> Vec<Family> {
+    let mut families = Vec::new();
+    for sampling in [
+        MicrofacetSampling::HalfVector,
+        MicrofacetSampling::VisibleNormals,
+    ] {
+        for alpha in [0.01, 0.1, 0.5, 1.0] {
+            for cos_o in [1.0, 0.5, 0.05] {
+                families.push(conductor_family(alpha, cos_o, sampling));
+            }
+        }
+    }
+    families
 }
 
 /// Every direction sampler of the library.
@@ -148,7 +291,7 @@ fn families() -> Vec<Family> {
         albedo: Vec3::splat(0.7),
     };
     let wo = Vec3::new(0.3, -0.2, 0.9).normalize();
-    vec![
+    let mut families = vec![
         warp_family(
             "uniform hemisphere",
             sample_uniform_hemisphere,
@@ -176,6 +319,7 @@ fn families() -> Vec<Family> {
             pdf: Box::new(move |w| diffuse.pdf(wo, w) as f64),
             frame: Frame::from_z(Vec3::Z),
             cos_min: 0.0,
+            lossy: false,
         },
         light_family(
             "area light, far and oblique",
@@ -200,7 +344,9 @@ fn families() -> Vec<Family> {
             },
             Vec3::new(3.0, -1.0, 2.0),
         ),
-    ]
+    ];
+    families.extend(conductor_families());
+    families
 }
 
 /// Histogram grid: cells in `cos theta` and in `phi`, sub-grid points per
@@ -212,10 +358,11 @@ const SAMPLES: u64 = 400_000;
 
 /// The chi-square test of `family` with `SAMPLES` draws from stream
 /// `stream`: the p-value, plus draws the sampler refused and draws off the
-/// grid (both must be 0).
+/// grid (both must be 0), unless the family is lossy: those draws then
+/// fill one more cell.
 fn goodness_of_fit(family: &Family, stream: u64) -> (common::ChiSquare, u64) {
-    let c0 = family.cos_min;
-    let dc = (1.0 - c0) / COS_CELLS as f64;
+    let (c0, c1) = radial_range(family);
+    let dc = (c1 - c0) / COS_CELLS as f64;
     let dp = 2.0 * PI / PHI_CELLS as f64;
     let mut observed = vec![0u64; COS_CELLS * PHI_CELLS];
     let mut refused = 0;
@@ -226,8 +373,8 @@ fn goodness_of_fit(family: &Family, stream: u64) -> (common::ChiSquare, u64) {
             refused += 1;
             continue;
         };
-        let (c, p) = polar(&family.frame, w);
-        if c < c0 {
+        let (c, p) = radial(family, w);
+        if c < c0 || c > c1 {
             off_grid += 1;
             continue;
         }
@@ -240,20 +387,76 @@ fn goodness_of_fit(family: &Family, stream: u64) -> (common::ChiSquare, u64) {
         let ci = c0 + i as f64 * dc;
         for j in 0..PHI_CELLS {
             let pj = j as f64 * dp;
-            expected
-                .push(SAMPLES as f64 * integrate(family, (ci, ci + dc), (pj, pj + dp), SUB, SUB));
+            let cell = integrate_cell(family, (ci, ci + dc), (pj, pj + dp));
+            expected.push(SAMPLES as f64 * cell);
         }
     }
-    (chi_square(&observed, &expected), refused + off_grid)
+    if !family.lossy {
+        return (chi_square(&observed, &expected), refused + off_grid);
+    }
+    let on_grid: f64 = expected.iter().sum();
+    observed.push(refused + off_grid);
+    expected.push((SAMPLES as f64 - on_grid).max(0.0));
+    (chi_square(&observed, &expected), 0)
+}
+
+/// The integral of a lossy family's density over the whole sphere: its
+/// cap finely, then rings of doubling angular radius out to the south pole.
+fn integrate_sphere(family: &Family) -> f64 {
+    let (_, cap) = radial_range(family);
+    let mut total = integrate_radial(family, (0.0, cap), (0.0, 2.0 * PI), 400, 400);
+    let mut theta = cap;
+    while theta < PI {
+        let next = (2.0 * theta).min(PI);
+        total += integrate_radial(family, (theta, next), (0.0, 2.0 * PI), 100, 400);
+        theta = next;
+    }
+    total
+}
+
+/// The fraction of `n` draws from stream `stream` the sampler keeps, with
+/// its binomial standard error.
+fn kept_fraction(family: &Family, n: u64, stream: u64) -> (f64, f64) {
+    let mut rng = sampler(0x0C0B_BEE5, stream);
+    let kept = (0..n)
+        .filter(|_| (family.sample)(next_2d(&mut rng)).is_some())
+        .count() as f64
+        / n as f64;
+    (kept, (kept * (1.0 - kept) / n as f64).sqrt())
+}
+
+/// The lossy family's density integrates to its kept fraction: `Ok` with
+/// both, or `Err` with a message.
+fn check_lossy_mass(family: &Family, stream: u64, alpha: f64) -> Result<(f64, f64), String> {
+    let total = integrate_sphere(family);
+    let (kept, se) = kept_fraction(family, 100_000, stream);
+    // Quadrature error of the midpoint rule across the horizon's cut: 2e-3.
+    let limit = common::z_two_sided(alpha) * se + 2e-3;
+    if (total - kept).abs() <= limit {
+        Ok((total, kept))
+    } else {
+        Err(format!(
+            "{}: the pdf integrates to {total} over the sphere, but {kept} of the draws are kept              (limit {limit:.2e})",
+            family.name
+        ))
+    }
 }
 
 #[test]
 fn every_density_integrates_to_one() {
-    for family in families() {
+    let families = families();
+    let lossy = families.iter().filter(|f| f.lossy).count();
+    for (stream, family) in families.iter().enumerate() {
+        if family.lossy {
+            let (total, kept) = check_lossy_mass(family, stream as u64, ALPHA / lossy as f64)
+                .unwrap_or_else(|e| panic!("{e}"));
+            eprintln!("{}: integral {total:.5}, kept {kept:.5}", family.name);
+            continue;
+        }
         // Where the density lives, finely; below cos_min, coarsely (it must be 0).
-        let inside = integrate(&family, (family.cos_min, 1.0), (0.0, 2.0 * PI), 1500, 1500);
+        let inside = integrate(family, (family.cos_min, 1.0), (0.0, 2.0 * PI), 1500, 1500);
         let outside = if family.cos_min > -1.0 {
-            integrate(&family, (-1.0, family.cos_min), (0.0, 2.0 * PI), 200, 400)
+            integrate(family, (-1.0, family.cos_min), (0.0, 2.0 * PI), 200, 400)
         } else {
             0.0
         };
@@ -311,13 +514,19 @@ fn every_sampler_matches_its_density_chi_square() {
 #[test]
 fn the_checks_reject_wrong_densities() {
     let mut wrong = Vec::new();
-    for family in families() {
+    // Of the conductor families, those of alpha 0.1 (both strategies, every
+    // angle) stand for the rest, to keep the run short.
+    let sample_of_families = families()
+        .into_iter()
+        .filter(|f| !f.lossy || f.name.contains("alpha 0.1,"));
+    for family in sample_of_families {
         let Family {
             name,
             sample,
             pdf,
             frame,
             cos_min,
+            lossy,
         } = family;
         if name.starts_with("area light, far") {
             // The course's quirk: r / (A cos) instead of r^2 / (A cos).
@@ -350,6 +559,7 @@ fn the_checks_reject_wrong_densities() {
                 }),
                 frame,
                 cos_min,
+                lossy,
             });
         } else if name == "cosine hemisphere" {
             wrong.push(Family {
@@ -358,6 +568,7 @@ fn the_checks_reject_wrong_densities() {
                 pdf: Box::new(|w| uniform_hemisphere_pdf(w) as f64),
                 frame,
                 cos_min,
+                lossy,
             });
         } else {
             wrong.push(Family {
@@ -366,6 +577,7 @@ fn the_checks_reject_wrong_densities() {
                 pdf: Box::new(move |w| 1.1 * pdf(w)),
                 frame,
                 cos_min,
+                lossy,
             });
         }
     }
@@ -379,6 +591,14 @@ fn the_checks_reject_wrong_densities() {
             family.name,
             test.p_value
         );
+        if family.lossy {
+            assert!(
+                check_lossy_mass(family, 100 + stream as u64, alpha).is_err(),
+                "{}: the mass check should reject it",
+                family.name
+            );
+            continue;
+        }
         let total = integrate(family, (family.cos_min, 1.0), (0.0, 2.0 * PI), 600, 600);
         if !family.name.starts_with("cosine samples") {
             assert!(

@@ -6,7 +6,7 @@ use clap::Parser;
 
 use crate::adaptive::Adaptive;
 use crate::lights::LightConvention;
-use crate::materials::{BsdfOptions, FresnelModel};
+use crate::materials::{BsdfOptions, FresnelModel, MicrofacetSampling};
 use crate::render::RenderSettings;
 use crate::scene::{builtin, Scene, SceneError};
 use crate::world::WorldOptions;
@@ -80,6 +80,11 @@ pub struct CourseArgs {
     /// as the course computes it. Default: the exact Fresnel equations.
     #[arg(long)]
     pub schlick: bool,
+
+    /// Microfacet BSDFs sample the Beckmann half vector, as the course
+    /// does. Default: sampling of the visible normals (less noise).
+    #[arg(long)]
+    pub half_vector: bool,
 
     /// Print what the scene holds, one item a line, and exit.
     #[arg(long)]
@@ -171,6 +176,11 @@ impl CourseArgs {
                     FresnelModel::Schlick
                 } else {
                     FresnelModel::Exact
+                },
+                microfacet: if self.half_vector {
+                    MicrofacetSampling::HalfVector
+                } else {
+                    MicrofacetSampling::VisibleNormals
                 },
             },
         }

@@ -22,16 +22,20 @@
 //! | mirror | [`mirror`] | delta reflection |
 //! | refraction | [`refraction`] | delta transmission |
 //! | glass | [`glass`] | delta reflection and transmission, Fresnel ([`fresnel`]) |
+//! | microfacet | [`microfacet`] | rough conductor: Beckmann ([`beckmann`]), height-correlated Smith `G`, conductor Fresnel; sampled by half vector or visible normals ([`MicrofacetSampling`]) |
 
+pub mod beckmann;
 pub mod diffuse;
 pub mod fresnel;
 pub mod glass;
+pub mod microfacet;
 pub mod mirror;
 pub mod refraction;
 pub mod specular;
 
 pub use diffuse::Diffuse;
 pub use glass::Glass;
+pub use microfacet::Conductor;
 pub use mirror::Mirror;
 pub use refraction::Refraction;
 
@@ -99,10 +103,22 @@ pub enum FresnelModel {
     Schlick,
 }
 
+/// How a microfacet BSDF draws the microfacet normal it reflects about.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum MicrofacetSampling {
+    /// From `D(h) cos(theta_h)` (Walter et al. 2007), as the course does.
+    HalfVector,
+    /// From the normals visible from `wo` (Heitz and d'Eon 2014): lower
+    /// variance, most of all at grazing angles.
+    #[default]
+    VisibleNormals,
+}
+
 /// Choices a render makes for every BSDF.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct BsdfOptions {
     pub fresnel: FresnelModel,
+    pub microfacet: MicrofacetSampling,
 }
 
 /// The BSDF of a surface point.
@@ -114,6 +130,8 @@ pub enum Bsdf {
     Mirror(Mirror),
     Refraction(Refraction),
     Glass(Glass),
+    /// A rough conductor (the course's microfacet material).
+    Conductor(Conductor),
 }
 
 impl Bsdf {
@@ -145,9 +163,9 @@ impl Bsdf {
                 eta: relative(ior),
                 fresnel: options.fresnel,
             }),
-            Material::Microfacet { .. } => Bsdf::Diffuse(Diffuse {
-                albedo: Rgb::splat(0.5),
-            }),
+            Material::Microfacet { alpha, eta, k } => {
+                Bsdf::Conductor(Conductor::new(alpha, eta, k, options.microfacet))
+            }
         }
     }
 
@@ -166,6 +184,7 @@ impl Bsdf {
     pub fn f(&self, wo: Vec3, wi: Vec3) -> Rgb {
         match self {
             Bsdf::Diffuse(d) => d.f(wo, wi),
+            Bsdf::Conductor(c) => c.f(wo, wi),
             _ => Rgb::ZERO,
         }
     }
@@ -180,6 +199,7 @@ impl Bsdf {
             Bsdf::Mirror(m) => m.sample(wo),
             Bsdf::Refraction(r) => r.sample(wo),
             Bsdf::Glass(g) => g.sample(wo, uc),
+            Bsdf::Conductor(c) => c.sample(wo, u),
         }
     }
 
@@ -188,6 +208,7 @@ impl Bsdf {
     pub fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
         match self {
             Bsdf::Diffuse(d) => d.pdf(wo, wi),
+            Bsdf::Conductor(c) => c.pdf(wo, wi),
             _ => 0.0,
         }
     }

@@ -64,7 +64,6 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
         return Ok(());
     };
     let part = part(&scene)?;
-    warn_about_stand_ins(&scene);
     let start = Instant::now();
     let accel = BvhAccel::new(primitives);
     println!(
@@ -94,25 +93,6 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
         println!("wrote {}", path.display());
     }
     Ok(())
-}
-
-/// Names the materials that render as diffuse until their part exists.
-fn warn_about_stand_ins(scene: &Scene) {
-    let mut kinds: Vec<&str> = scene
-        .materials
-        .iter()
-        .filter(|m| matches!(m, crate::scene::Material::Microfacet { .. }))
-        .map(|m| m.kind())
-        .collect();
-    kinds.sort_unstable();
-    kinds.dedup();
-    if !kinds.is_empty() {
-        eprintln!(
-            "warning: {}: {} rendered as diffuse (their BSDFs come with assignment 3-2)",
-            scene.source,
-            kinds.join(", ")
-        );
-    }
 }
 
 /// `part3-direct`: emission plus direct lighting (`-H` or light sampling).
