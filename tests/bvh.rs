@@ -198,32 +198,15 @@ fn check_camera_rays(scene: &Scene, prims: &Primitives, bvh: &BvhAccel) {
 }
 
 /// Every course scene that is present: BVH against linear scan on a few
-/// thousand random rays and the camera's rays. Skipped (with a note) while
-/// the COLLADA loader is not written yet, or where the scenes are absent.
+/// thousand random rays and the camera's rays. Skipped (saying so) where
+/// the scenes are absent.
 #[test]
 fn course_scenes_match_linear_scan() {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/scenes/cs184");
-    let Ok(entries) = std::fs::read_dir(dir) else {
-        println!("note: no course scenes at {dir}; skipped");
+    let Some(files) = common::course_scenes() else {
         return;
     };
-    let mut files: Vec<_> = entries
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "dae"))
-        .collect();
-    files.sort();
     for (index, path) in files.iter().enumerate() {
-        let scene = match pathtracer::scene::load(path) {
-            Ok(scene) => scene,
-            Err(e) if e.problem.contains("not implemented") => {
-                println!(
-                    "note: {}: loader not implemented yet; skipped",
-                    path.display()
-                );
-                continue;
-            }
-            Err(e) => panic!("{e}"),
-        };
+        let scene = pathtracer::scene::load(path).unwrap_or_else(|e| panic!("{e}"));
         let prims = Primitives::from_scene(&scene);
         let bvh = check_scene(prims.clone(), 3000, 100 + index as u64);
         check_camera_rays(&scene, &prims, &bvh);

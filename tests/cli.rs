@@ -138,3 +138,57 @@ fn course_lights_brighten_the_area_lit_box() {
         "course {course}, physical {physical}"
     );
 }
+
+#[test]
+fn an_output_name_of_another_format_is_refused_before_rendering() {
+    let dir = tempfile::tempdir().unwrap();
+    for name in ["out.jpg", "out"] {
+        let path = dir.path().join(name);
+        for binary in BINARIES {
+            let (ok, stdout, stderr) = run(binary, &["-r", "8", "6", "-f", path.to_str().unwrap()]);
+            assert!(!ok, "{binary} accepted {name}");
+            assert!(stderr.starts_with("error: "), "{stderr}");
+            assert!(stderr.contains(path.to_str().unwrap()), "{stderr}");
+            assert!(
+                stderr.contains(".png") && stderr.contains(".exr"),
+                "{stderr}"
+            );
+            assert!(!stdout.contains("render:"), "rendered first: {stdout}");
+            assert!(!path.exists(), "{name} was written");
+        }
+    }
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
+}
+
+#[test]
+fn an_unwritable_output_fails_before_rendering() {
+    let dir = tempfile::tempdir().unwrap();
+    let nowhere = dir.path().join("no-such-folder").join("x.png");
+    let taken = dir.path().join("taken.png");
+    std::fs::create_dir(&taken).unwrap();
+    for binary in BINARIES {
+        for (path, problem) in [(&nowhere, "does not exist"), (&taken, "is a folder")] {
+            // Sizes that would take a while to render: the error must come first.
+            let (ok, stdout, stderr) = run(
+                binary,
+                &["-r", "800", "600", "-s", "64", "-f", path.to_str().unwrap()],
+            );
+            assert!(!ok, "{binary} accepted {}", path.display());
+            assert!(
+                stderr.starts_with("error: ")
+                    && stderr.contains(path.to_str().unwrap())
+                    && stderr.contains(problem),
+                "{stderr}"
+            );
+            assert!(!stdout.contains("render:"), "rendered first: {stdout}");
+        }
+    }
+    assert!(!nowhere.exists() && taken.is_dir());
+}
+
+#[test]
+fn info_needs_no_writable_output() {
+    let (ok, stdout, stderr) = run(PATHTRACER, &["--info", "-f", "/no-such-folder/x.jpg"]);
+    assert!(ok, "{stderr}");
+    assert!(stdout.lines().any(|l| l == "triangles: 12"), "{stdout}");
+}

@@ -1,10 +1,10 @@
-//! Small renders of the course scenes (skipped, with a note, without the
-//! course's files): the path tracer with both direct-lighting strategies
+//! Small renders of the course scenes (skipped, saying so, without the
+//! course's files: see `common::course`): the path tracer with both direct-lighting strategies
 //! stays finite on real meshes.
 
 mod common;
 
-use common::{course_dir, tracer, HEMISPHERE, LIGHTS};
+use common::{course_scenes, tracer, HEMISPHERE, LIGHTS};
 use pathtracer::bvh::BvhAccel;
 use pathtracer::cli::drivers::render_lighting;
 use pathtracer::intersect::Primitives;
@@ -14,20 +14,13 @@ use pathtracer::world::World;
 
 /// Small renders of every course scene stay finite: samples with a NaN or
 /// infinite radiance are counted in `Rendered::rejected()` and left out,
-/// so the film has no non-finite pixel. Skipped (with a note) without the
+/// so the film has no non-finite pixel. Skipped (saying so) without the
 /// course's files.
 #[test]
 fn course_scenes_render_without_nan_or_infinity() {
-    let Some(dir) = course_dir() else {
+    let Some(files) = course_scenes() else {
         return;
     };
-    let mut files: Vec<_> = std::fs::read_dir(&dir)
-        .expect("readable scene folder")
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "dae"))
-        .collect();
-    files.sort();
-    assert!(!files.is_empty(), "no .dae in {}", dir.display());
     let settings = RenderSettings {
         width: 64,
         height: 48,
@@ -37,7 +30,7 @@ fn course_scenes_render_without_nan_or_infinity() {
         progress: false,
     };
     for path in files {
-        let scene = pathtracer::scene::load(&path).expect("course scene loads");
+        let scene = pathtracer::scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
         let primitives = Primitives::from_scene(&scene);
         let camera = Camera::course_placement(
             &scene.camera,

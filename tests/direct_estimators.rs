@@ -34,7 +34,7 @@ use pathtracer::world::World;
 /// sampling of an emissive quad at the same place (a `Material::Emission`
 /// mesh, no light, so not a stand-in); and light sampling in that
 /// emissive-quad scene, which samples the quad's triangles as a light
-/// (`direct::emitters`).
+/// (`lights::triangles`).
 ///
 /// Closed form sanity: for a small light the formula tends to
 /// `L A cos_l cos_x / r^2` (checked below). Checked by hand: the area-light

@@ -10,6 +10,17 @@ use common::MINIMAL;
 
 const FILE: &str = "minimal.dae";
 
+/// The course's `CBspheres.dae`, read once (and said once to be skipped
+/// when it is not found).
+fn cbspheres_text() -> Option<&'static str> {
+    static TEXT: std::sync::OnceLock<Option<String>> = std::sync::OnceLock::new();
+    TEXT.get_or_init(|| {
+        let path = common::course_file("CBspheres.dae")?;
+        Some(std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display())))
+    })
+    .as_deref()
+}
+
 proptest! {
     #![proptest_config(common::cases(512))]
 
@@ -36,8 +47,7 @@ proptest! {
     /// Any prefix of a course file loads or fails cleanly.
     #[test]
     fn course_file_truncation_never_panics(fraction in 0.0f64..1.0) {
-        if let Some(dir) = common::course_dir() {
-            let text = std::fs::read_to_string(dir.join("CBspheres.dae")).unwrap();
+        if let Some(text) = cbspheres_text() {
             let mut cut = (text.len() as f64 * fraction) as usize;
             while !text.is_char_boundary(cut) {
                 cut -= 1;

@@ -9,8 +9,9 @@
 //! `-l`), `global` (max depth, Russian roulette), `adaptive` (adaptive vs
 //! uniform sampling), `course` (the course's area and point light
 //! factors) or `all`. Charts go to `--out` (default `docs/images`), tables
-//! to stdout, progress to stderr. Scenes are read from `--scenes`
-//! (default `../shared/scenes/cs184`). Images are 160 x 120 (`-r`) with
+//! to stdout, progress to stderr. The course's scenes are found by name
+//! under `--scenes DIR`, by default under `$CS184_SCENES` (the course
+//! starter's `dae/` folder; see `pathtracer::scene::course_files`). Images are 160 x 120 (`-r`) with
 //! the camera of a 480 x 360 render, so they show the whole Cornell box.
 //!
 //! Error: the RMS luminance error against a reference render of many
@@ -34,7 +35,7 @@ const USAGE: &str = "usage: convergence direct|samples|global|adaptive|course|al
 fn parse(args: &[String]) -> Result<(String, Options), Box<dyn Error>> {
     let mut study = None;
     let mut options = Options {
-        scenes: PathBuf::from("../shared/scenes/cs184"),
+        scenes: None,
         out: PathBuf::from("docs/images"),
         threads: None,
         size: (160, 120),
@@ -48,7 +49,7 @@ fn parse(args: &[String]) -> Result<(String, Options), Box<dyn Error>> {
     while let Some(arg) = it.next() {
         match arg.as_str() {
             "--out" => options.out = value(&mut it, "--out")?.into(),
-            "--scenes" => options.scenes = value(&mut it, "--scenes")?.into(),
+            "--scenes" => options.scenes = Some(value(&mut it, "--scenes")?.into()),
             "-t" => options.threads = Some(value(&mut it, "-t")?.parse()?),
             "-r" => {
                 options.size = (

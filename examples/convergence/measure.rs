@@ -36,7 +36,7 @@ use pathtracer::intersect::Primitives;
 use pathtracer::math::luminance;
 use pathtracer::raygen::Camera;
 use pathtracer::render::{pixel_ray, RenderSettings, Rendered};
-use pathtracer::scene::Scene;
+use pathtracer::scene::{course_files, Scene};
 use pathtracer::world::World;
 
 /// Seed of every reference render; test renders use small seeds.
@@ -54,15 +54,27 @@ pub struct Setup {
 }
 
 impl Setup {
-    /// Loads `dir/file`, framed as the course frames a 480 x 360 render,
+    /// Loads the course scene `file`, found by name under `dir` (`--scenes`)
+    /// or else where [`pathtracer::scene::course_files`] looks
+    /// (`$CS184_SCENES`), framed as the course frames a 480 x 360 render,
     /// rendered at `width` x `height`.
     pub fn load(
-        dir: &Path,
+        dir: Option<&Path>,
         file: &str,
         (width, height): (u32, u32),
         threads: Option<usize>,
     ) -> Result<Self, Box<dyn Error>> {
-        let path: PathBuf = dir.join(file);
+        let path: PathBuf = match dir {
+            Some(dir) => course_files::find_in(&[dir.to_path_buf()], file)
+                .ok_or_else(|| format!("{file} not found under --scenes {}", dir.display()))?,
+            None => course_files::find(file).ok_or_else(|| {
+                format!(
+                    "{file} not found ({}); {}, or pass --scenes DIR",
+                    course_files::searched(),
+                    course_files::HOW_TO_ENABLE
+                )
+            })?,
+        };
         let scene = pathtracer::scene::load(&path)?;
         let primitives = Primitives::from_scene(&scene);
         let camera = Camera::course_placement(&scene.camera, &primitives.bounds(), 480, 360);

@@ -16,7 +16,8 @@ type Result<T> = std::result::Result<T, Box<dyn Error>>;
 
 /// What every study needs to know.
 pub struct Options {
-    pub scenes: PathBuf,
+    /// `--scenes DIR`; `None`: `$CS184_SCENES` (see `course_files`).
+    pub scenes: Option<PathBuf>,
     pub out: PathBuf,
     pub threads: Option<usize>,
     pub size: (u32, u32),
@@ -24,7 +25,7 @@ pub struct Options {
 
 impl Options {
     fn setup(&self, file: &str) -> Result<Setup> {
-        Setup::load(&self.scenes, file, self.size, self.threads)
+        Setup::load(self.scenes.as_deref(), file, self.size, self.threads)
     }
 }
 

@@ -26,9 +26,8 @@ pub const SAH_DEPTH_LIMIT: usize = 30;
 #[derive(Clone, Copy, Debug)]
 pub struct BuildOptions {
     /// Cost of visiting an interior node (two box tests in one 4-lane
-    /// slab test), relative to one primitive test. 2 built the fastest
-    /// trees for the benchmark of `docs/03-bvh.md` (1 and 4 were no faster
-    /// to trace; 2 and 4 build faster, having fewer nodes).
+    /// slab test), relative to one primitive test. Default 2: the two box
+    /// tests of a visit.
     pub traversal_cost: f32,
     /// Leaves never hold more primitives than this (unless they all share
     /// one centroid and the depth limit is reached).

@@ -11,9 +11,10 @@
 //!   against `C_isect * N` for a leaf; `SA` is surface area, because the
 //!   chance that a random ray meeting `A` also meets a convex `B` inside it
 //!   is `SA(B) / SA(A)`.
-//! - [`Bvh`]: the tree flattened into one array of 32-byte [`Node`]s; the two
-//!   children of an interior node sit side by side, so one cache line holds
-//!   both boxes that traversal tests next.
+//! - [`Bvh`]: the tree flattened into one array of 64-byte interior [`Node`]s
+//!   (`size_of::<Node>()`, checked by a unit test), each holding the boxes
+//!   of both its children and the links to them, so one 64-byte cache line
+//!   holds both boxes that traversal tests next.
 //! - [`traverse`]: closest-hit (front-to-back, nearer child first, with a
 //!   stack) and any-hit (shadow rays: stop at the first hit).
 //! - [`validate`]: structural checks used after every build in the tests.
@@ -188,5 +189,21 @@ impl Bvh {
             .iter()
             .filter(|(l, _)| l.is_leaf())
             .fold((0, 0), |(n, d), &(_, depth)| (n + 1, d.max(depth)))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The layout the docs promise: one node, one 64-byte cache line.
+    #[test]
+    fn a_node_is_one_cache_line() {
+        assert_eq!(std::mem::size_of::<Node>(), 64);
+        assert_eq!(std::mem::align_of::<Node>(), 64);
+        assert_eq!(std::mem::size_of::<Link>(), 8);
+        // What a leaf's triangle costs in docs/03-bvh.md: three `Vec3`s
+        // and the enum's tag.
+        assert_eq!(std::mem::size_of::<crate::intersect::Shape>(), 40);
     }
 }

@@ -1,4 +1,5 @@
-//! The flags students know (cs184-format.md, section 7), parsed by clap.
+//! The flags students know (the course starter's command line, parsed in
+//! its `src/main.cpp` and listed in the assignment's handout), parsed by clap.
 
 use std::path::{Path, PathBuf};
 
@@ -35,7 +36,8 @@ pub struct CourseArgs {
           value_parser = clap::value_parser!(u32).range(1..=MAX_SIDE as i64))]
     pub resolution: Vec<u32>,
 
-    /// Output image: PNG (tone mapped) or .exr (linear radiance).
+    /// Output image: .png (8-bit, tone mapped) or .exr (linear radiance);
+    /// other names are refused. Checked before rendering.
     /// Default: the scene's name with .png, in the current directory.
     #[arg(short = 'f', value_name = "FILE")]
     pub output: Option<PathBuf>,

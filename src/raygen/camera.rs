@@ -1,7 +1,7 @@
 //! The course's pinhole camera.
 //!
 //! Ray for the normalised image point `(x, y)` in `[0, 1]^2`, `y = 0` at the
-//! bottom row (cs184-format.md, section 2):
+//! bottom row (the starter's `Camera::generate_ray`, `src/pathtracer/camera.cpp`):
 //!
 //! ```text
 //! d_cam = ((2x - 1) tan(hFov / 2), (2y - 1) tan(vFov / 2), -1)

@@ -11,7 +11,9 @@ pub mod rendered;
 pub mod tiles;
 
 pub use film::Film;
-pub use output::{tone_map, write_image, write_png, OutputError};
+pub use output::{
+    check_output_path, tone_map, write_image, write_png, OutputError, OutputFormat, OUTPUT_FORMATS,
+};
 pub use rendered::Rendered;
 pub use tiles::{render_tiles, RenderSettings, RenderStats};
 

@@ -58,7 +58,9 @@ pub struct Sphere {
     pub material: MaterialId,
 }
 
-/// The BSDFs and emitters of the course (`cs184-format.md`, section 5).
+/// The BSDFs and emitters of the course: the `CGL` techniques the starter's
+/// `ColladaParser::parse_material` reads (`src/scene/collada/collada.cpp`),
+/// with the BSDFs of its `src/pathtracer/bsdf.h`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Material {
     /// Lambertian: f = albedo / pi.
@@ -118,7 +120,10 @@ impl Material {
     }
 }
 
-/// Light sources (`cs184-format.md`, section 3), in world space.
+/// Light sources, in world space: the kinds the starter's
+/// `ColladaParser::parse_light` reads, sampled as its `AreaLight::sample_L`,
+/// `PointLight::sample_L`, ... do (`src/scene/light.cpp`; where this
+/// project differs, see `docs/04-direct.md`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Light {
     /// One-sided rectangle `center + s * dim_x + t * dim_y`, s, t in

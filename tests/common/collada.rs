@@ -1,7 +1,5 @@
 //! Test data shared by the loader tests: a small self-made COLLADA scene
-//! (not course data) and the location of the course's scene files.
-
-use std::path::PathBuf;
+//! (not course data). The course's own files are found by `course.rs`.
 
 /// A minimal scene in the course's dialect, made for the tests. Z-up, a
 /// camera, a point light, a mesh (a quad fan-triangulated into two
@@ -94,22 +92,4 @@ pub fn corrupt(from: &str, to: &str) -> String {
         "pattern {from:?} must occur once"
     );
     MINIMAL.replacen(from, to, 1)
-}
-
-/// The course's scene folder, or `None` with a printed note when it is not
-/// there (the tests that need it then pass vacuously).
-pub fn course_dir() -> Option<PathBuf> {
-    let dir = PathBuf::from(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../shared/scenes/cs184"
-    ));
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!(
-            "note: {} not found; skipping the course-file test",
-            dir.display()
-        );
-        None
-    }
 }

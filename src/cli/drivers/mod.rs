@@ -28,9 +28,11 @@ pub struct Prepared {
     pub camera: Camera,
 }
 
-/// Loads the scene named by `args` (printing the loader's warnings) and
-/// places the camera.
+/// Checks that the output image can be written ([`check_output`]), loads
+/// the scene named by `args` (printing the loader's warnings) and places
+/// the camera.
 pub fn prepare(args: &CourseArgs) -> Result<Prepared> {
+    check_output(args)?;
     let scene = args.load_scene()?;
     for warning in &scene.warnings {
         eprintln!("warning: {}: {warning}", scene.source);
@@ -47,6 +49,18 @@ pub fn prepare(args: &CourseArgs) -> Result<Prepared> {
         primitives,
         camera,
     })
+}
+
+/// Fails, before any render, when the image `-f` (or the default name)
+/// asks for cannot be written: a name that is neither `.png` nor `.exr`, a
+/// folder that does not exist or does not take a new file
+/// ([`crate::render::check_output_path`]). Nothing to check with `--info`,
+/// which writes no image. [`prepare`] calls it first, so every driver does.
+pub fn check_output(args: &CourseArgs) -> Result<()> {
+    if !args.info {
+        crate::render::check_output_path(&args.output_path())?;
+    }
+    Ok(())
 }
 
 /// With `--info`, prints the scene's summary and gives `None`.

@@ -1,7 +1,7 @@
 //! `<camera>` with its `<instance_camera>` node: the course's [`CameraInfo`].
 //!
 //! The course keeps only a viewing direction from the file and re-places the
-//! camera itself (`cs184-format.md`, section 2):
+//! camera itself (the starter's `Application::init_camera`):
 //!
 //! ```text
 //! dir_to_camera = normalize( G * (T * (0, 0, -1, 1)).xyz )

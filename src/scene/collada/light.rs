@@ -1,5 +1,5 @@
 //! `<light>` with its `<instance_light>` node: the course's [`Light`]s
-//! (`cs184-format.md`, section 3).
+//! (the starter's `ColladaParser::parse_light`, `src/scene/collada/collada.cpp`).
 //!
 //! The light's kind is the first element of `<extra><technique
 //! profile="CGL">` when there is one (it wins), else of `<technique_common>`.

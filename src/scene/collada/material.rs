@@ -1,5 +1,6 @@
 //! `<material>` -> `<instance_effect>` -> `<effect>`: the course's
-//! [`Material`]s (`cs184-format.md`, section 5).
+//! [`Material`]s (the starter's `ColladaParser::parse_material`,
+//! `src/scene/collada/collada.cpp`).
 //!
 //! If the effect contains a `<technique profile="CGL">` anywhere (under
 //! `effect/extra`, or under `profile_COMMON/extra`), its first element names

@@ -1,5 +1,5 @@
-//! The course's COLLADA 1.4.1 dialect (`cs184-format.md`), read into a
-//! world-space [`Scene`].
+//! The course's COLLADA 1.4.1 dialect (the starter's `ColladaParser`,
+//! `src/scene/collada/collada.cpp`), read into a world-space [`Scene`].
 //!
 //! The module tree, one step of the reading each:
 //!
