@@ -78,6 +78,12 @@ pub struct CourseArgs {
     #[arg(long)]
     pub no_mis: bool,
 
+    /// No light sampling: only the paths' BSDF-sampled rays find the
+    /// lights (point and directional lights stay dark); the reference
+    /// that light sampling and MIS improve on.
+    #[arg(long, conflicts_with_all = ["hemisphere", "no_mis"])]
+    pub bsdf_only: bool,
+
     /// Glass reflects by Schlick's approximation of the Fresnel equations,
     /// as the course computes it. Default: the exact Fresnel equations.
     #[arg(long)]

@@ -8,17 +8,19 @@
 //! depends on the direct-lighting strategy and on the emitter's role
 //! ([`crate::lights::EmitterRole`]):
 //!
-//! | previous vertex | emitter | `-H` | lights, `--no-mis` | lights with MIS |
-//! | --- | --- | --- | --- | --- |
-//! | camera or delta | any | 1 | 1 | 1 |
-//! | scattering | shown only (a stand-in) | 0 | 0 | 0 |
-//! | scattering | sampled by a light | 0 | 0 | `w_bsdf` |
-//! | scattering | sampled by nothing | 0 | 1 | 1 |
+//! | previous vertex | emitter | `-H` | lights, `--no-mis` | lights with MIS | `--bsdf-only` |
+//! | --- | --- | --- | --- | --- | --- |
+//! | camera or delta | any | 1 | 1 | 1 | 1 |
+//! | scattering | shown only (a stand-in) | 0 | 0 | 0 | 0 |
+//! | scattering | sampled by a light | 0 | 0 | `w_bsdf` | 1 |
+//! | scattering | sampled by nothing | 0 | 1 | 1 | 1 |
 //!
 //! `w_bsdf = power_heuristic(1, p_bsdf, N, p_light)`: the BSDF sample's
 //! side of the multiple importance sampling that [`crate::direct::DirectLights`]
 //! weighs its `N` light samples with. With `-H` the hemisphere rays at the
-//! previous vertex already counted every emitter.
+//! previous vertex already counted every emitter; with `--bsdf-only`
+//! nothing else counts any (a stand-in's light is then found as its
+//! rectangle, like every rectangle light after a scattering vertex).
 
 use glam::Vec3;
 
@@ -54,7 +56,7 @@ pub fn emission_weight(direct: &DirectStrategy, prev: &PrevVertex, emitter: Emit
     };
     match (direct, emitter) {
         (DirectStrategy::Hemisphere(_), _) | (_, Emitter::Shown) => 0.0,
-        (_, Emitter::Unsampled) => 1.0,
+        (_, Emitter::Unsampled) | (DirectStrategy::BsdfOnly, _) => 1.0,
         (DirectStrategy::Lights(d), Emitter::Sampled { light_pdf, samples }) => {
             if d.mis {
                 power_heuristic(1.0, bsdf_pdf, samples as f32, light_pdf)

@@ -49,14 +49,26 @@ pub const CONTINUE_PROBABILITY: f32 = 0.65;
 /// How direct light is estimated at each path vertex.
 #[derive(Clone, Copy, Debug)]
 pub enum DirectStrategy {
+    /// Uniform hemisphere rays at each vertex (`-H`).
     Hemisphere(DirectHemisphere),
+    /// Light sampling at each vertex, with or without MIS.
     Lights(DirectLights),
+    /// No direct-light estimate: only the BSDF-sampled rays of the path
+    /// find emitters (`--bsdf-only`), the reference that light sampling and
+    /// MIS improve on. Delta lights stay dark.
+    BsdfOnly,
 }
 
 impl DirectStrategy {
     /// Whether light sampling is weighted against BSDF sampling.
     pub fn mis(&self) -> bool {
         matches!(self, DirectStrategy::Lights(d) if d.mis)
+    }
+
+    /// Whether BSDF-sampled rays after a scattering vertex count (some of)
+    /// the lights they find.
+    pub fn bsdf_rays_find_lights(&self) -> bool {
+        self.mis() || matches!(self, DirectStrategy::BsdfOnly)
     }
 }
 
@@ -111,7 +123,8 @@ impl PathTracer {
             if bounces > self.max_depth || point.bsdf.is_black() {
                 return l;
             }
-            if self.counts(bounces) && !point.bsdf.is_delta() {
+            let estimates_direct = !matches!(self.direct, DirectStrategy::BsdfOnly);
+            if estimates_direct && self.counts(bounces) && !point.bsdf.is_delta() {
                 l += beta * self.one_bounce(world, &point, rng);
             }
             let last = bounces == self.max_depth;
@@ -160,6 +173,7 @@ impl PathTracer {
         match self.direct {
             DirectStrategy::Hemisphere(h) => h.estimate(world, point, rng),
             DirectStrategy::Lights(d) => d.estimate(world, point, rng),
+            DirectStrategy::BsdfOnly => Rgb::ZERO,
         }
     }
 
@@ -167,7 +181,7 @@ impl PathTracer {
     /// lobes when `delta`) can find emission that counts.
     fn last_ray_can_count<I: Intersector>(&self, world: &World<I>, delta: bool) -> bool {
         delta
-            || self.direct.mis()
+            || self.direct.bsdf_rays_find_lights()
             || (matches!(self.direct, DirectStrategy::Lights(_))
                 && world.lights.has_unsampled_emitters())
     }
@@ -186,7 +200,7 @@ impl PathTracer {
         let lights = &world.lights;
         let samples = |light: usize| match self.direct {
             DirectStrategy::Lights(d) => d.samples_of(&lights.lights[light]),
-            DirectStrategy::Hemisphere(_) => 1,
+            DirectStrategy::Hemisphere(_) | DirectStrategy::BsdfOnly => 1,
         };
         let light_pdf = |light: usize, hit: Option<LightHit>| match *prev {
             PrevVertex::Scattering { p, .. } => lights.lights[light].pdf_li(p, ray.dir, hit),
@@ -237,7 +251,7 @@ impl PathTracer {
         let t_hit = next.map_or(f32::INFINITY, |p| p.hit.t);
         for (i, rect, has_stand_in) in lights.rects() {
             let wanted = if after_scattering {
-                self.direct.mis()
+                self.direct.bsdf_rays_find_lights()
             } else {
                 !has_stand_in
             };

@@ -32,9 +32,12 @@ pub fn render_lighting<I: Intersector>(
 
 /// The direct-lighting strategy the flags ask for: `-H` for hemisphere
 /// sampling with (number of lights) x `-l` directions, else light sampling
-/// with `-l` samples per area light.
+/// with `-l` samples per area light (weighted by MIS unless `--no-mis`),
+/// or none with `--bsdf-only`.
 pub fn direct_strategy(args: &CourseArgs, scene: &Scene) -> DirectStrategy {
-    if args.hemisphere {
+    if args.bsdf_only {
+        DirectStrategy::BsdfOnly
+    } else if args.hemisphere {
         let lights = scene.lights.len().max(1) as u32;
         DirectStrategy::Hemisphere(DirectHemisphere {
             samples: lights * args.light_samples,
