@@ -1,16 +1,20 @@
 //! Small renders of the course scenes (skipped, saying so, without the
-//! course's files: see `common::course`): the path tracer with both direct-lighting strategies
-//! stays finite on real meshes.
+//! course's files: see `common::course`): the path tracer with every
+//! direct-lighting strategy and every BSDF option stays finite on real
+//! meshes and every material of the course.
 
 mod common;
 
 use common::{course_scenes, tracer, HEMISPHERE, LIGHTS};
 use pathtracer::bvh::BvhAccel;
 use pathtracer::cli::drivers::render_lighting;
+use pathtracer::direct::DirectLights;
+use pathtracer::global::DirectStrategy;
 use pathtracer::intersect::Primitives;
+use pathtracer::materials::{BsdfOptions, FresnelModel, MicrofacetSampling};
 use pathtracer::raygen::Camera;
 use pathtracer::render::RenderSettings;
-use pathtracer::world::World;
+use pathtracer::world::{World, WorldOptions};
 
 /// Small renders of every course scene stay finite: samples with a NaN or
 /// infinite radiance are counted in `Rendered::rejected()` and left out,
@@ -39,9 +43,26 @@ fn course_scenes_render_without_nan_or_infinity() {
             settings.height,
         );
         let accel = BvhAccel::new(primitives);
-        let st = World::new(&scene, &accel);
-        for direct in [LIGHTS, HEMISPHERE] {
-            let rendered = render_lighting(&st, &tracer(direct, 3, true), &camera, &settings, None);
+        let course_options = WorldOptions {
+            bsdf: BsdfOptions {
+                fresnel: FresnelModel::Schlick,
+                microfacet: MicrofacetSampling::HalfVector,
+            },
+            ..WorldOptions::default()
+        };
+        let no_mis = DirectStrategy::Lights(DirectLights {
+            samples_per_light: 2,
+            mis: false,
+        });
+        let runs = [
+            (WorldOptions::default(), LIGHTS),
+            (WorldOptions::default(), HEMISPHERE),
+            (WorldOptions::default(), DirectStrategy::BsdfOnly),
+            (course_options, no_mis),
+        ];
+        for (options, direct) in runs {
+            let st = World::with_options(&scene, &accel, options);
+            let rendered = render_lighting(&st, &tracer(direct, 6, true), &camera, &settings, None);
             let name = path.file_name().unwrap().to_string_lossy();
             eprintln!(
                 "{name} {direct:?}: {} samples, {} rejected",

@@ -138,6 +138,14 @@ fn part5_adaptive_sampling() {
 }
 
 #[test]
+fn part6_materials() {
+    assert_close_to_snapshot(
+        "part6-materials",
+        &render_with(drivers::part6, &["-s", "8", "-m", "6"]),
+    );
+}
+
+#[test]
 fn renders_do_not_depend_on_the_thread_count() {
     let one = render_with(drivers::pathtracer, &["-s", "4", "-t", "1"]);
     let two = render_with(drivers::pathtracer, &["-s", "4", "-t", "2"]);

@@ -98,9 +98,40 @@ pub struct CourseArgs {
     #[arg(long)]
     pub info: bool,
 
+    /// The scene rendered when no file is given (set by the binary, not a flag).
+    #[arg(skip)]
+    pub builtin: Builtin,
+
     /// Seed of the render's random numbers.
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
+}
+
+/// The built-in scenes a binary renders when no scene file is given.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Builtin {
+    /// [`builtin::cornell_box`]: diffuse spheres (parts 1 to 5).
+    #[default]
+    CornellBox,
+    /// [`builtin::materials_box`]: mirror, glass and copper (part 6).
+    MaterialsBox,
+}
+
+impl Builtin {
+    pub fn scene(self) -> Scene {
+        match self {
+            Builtin::CornellBox => builtin::cornell_box(),
+            Builtin::MaterialsBox => builtin::materials_box(),
+        }
+    }
+
+    /// The file name stem of its default output.
+    pub fn name(self) -> &'static str {
+        match self {
+            Builtin::CornellBox => "cornell-box",
+            Builtin::MaterialsBox => "materials-box",
+        }
+    }
 }
 
 /// `part2-bvh`'s flags: the course's, plus the benchmarks.
@@ -128,11 +159,11 @@ impl CourseArgs {
         self.resolution[1]
     }
 
-    /// The scene file's contents, or the built-in Cornell box.
+    /// The scene file's contents, or the built-in scene.
     pub fn load_scene(&self) -> Result<Scene, SceneError> {
         match &self.scene {
             Some(path) => crate::scene::load(path),
-            None => Ok(builtin::cornell_box()),
+            None => Ok(self.builtin.scene()),
         }
     }
 
@@ -143,7 +174,9 @@ impl CourseArgs {
                 .scene
                 .as_deref()
                 .and_then(Path::file_stem)
-                .map_or("cornell-box".into(), |s| s.to_string_lossy().into_owned());
+                .map_or(self.builtin.name().into(), |s| {
+                    s.to_string_lossy().into_owned()
+                });
             PathBuf::from(format!("{stem}.png"))
         })
     }

@@ -71,3 +71,66 @@ impl Glass {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn glass(eta: f32, fresnel: FresnelModel) -> Glass {
+        Glass {
+            reflectance: Rgb::ONE,
+            transmittance: Rgb::ONE,
+            eta,
+            fresnel,
+        }
+    }
+
+    #[test]
+    fn reflection_and_transmission_split_the_light_by_fresnel() {
+        for fresnel in [FresnelModel::Exact, FresnelModel::Schlick] {
+            for eta in [1.5f32, 1.0 / 1.5, 1.0] {
+                for cos in [1.0f32, 0.7, 0.3, 0.05] {
+                    let wo = Vec3::new((1.0 - cos * cos).sqrt(), 0.0, cos);
+                    let g = glass(eta, fresnel);
+                    let f = g.fresnel(wo);
+                    // R + T = 1: the two lobes' probabilities.
+                    let n = 1000;
+                    let (mut reflected, mut p_sum) = (0, 0.0);
+                    let mut seen = [false, false];
+                    for i in 0..n {
+                        let s = g.sample(wo, (i as f32 + 0.5) / n as f32).unwrap();
+                        let crossing = s.transmission as usize;
+                        if !seen[crossing] {
+                            seen[crossing] = true;
+                            p_sum += s.pdf();
+                        }
+                        let expected = if s.transmission {
+                            Rgb::splat(1.0 / (eta * eta))
+                        } else {
+                            Rgb::ONE
+                        };
+                        assert!((s.weight() - expected).abs().max_element() < 1e-5);
+                        assert!(s.is_delta() && (s.wi.length() - 1.0).abs() < 1e-5);
+                        reflected += (!s.transmission) as u32;
+                    }
+                    assert!((reflected as f32 / n as f32 - f).abs() <= 1.0 / n as f32);
+                    if seen[0] && seen[1] {
+                        assert!((p_sum - 1.0).abs() < 1e-6, "{eta} {cos}: {p_sum}");
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn total_internal_reflection_always_reflects() {
+        let g = glass(1.0 / 1.5, FresnelModel::Exact);
+        let wo = Vec3::new(0.9, 0.0, 0.19f32.sqrt());
+        for uc in [0.0, 0.5, 0.999] {
+            let s = g.sample(wo, uc).unwrap();
+            assert!(!s.transmission && s.pdf() == 1.0 && s.wi.z > 0.0);
+        }
+        let index_one = glass(1.0, FresnelModel::Exact).sample(wo, 0.3).unwrap();
+        assert!(index_one.transmission && (index_one.wi + wo).length() < 1e-6);
+    }
+}

@@ -54,3 +54,29 @@ impl Refraction {
         })
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn refracts_or_under_total_internal_reflection_reflects() {
+        let r = Refraction {
+            transmittance: Rgb::splat(0.9),
+            eta: 1.0 / 1.5,
+        };
+        let steep = Vec3::new(0.3, 0.0, 0.91f32.sqrt());
+        let s = r.sample(steep).unwrap();
+        assert!(s.transmission && s.wi.z < 0.0);
+        assert!(
+            (s.weight() - Rgb::splat(0.9 * 1.5 * 1.5))
+                .abs()
+                .max_element()
+                < 1e-5
+        );
+        let grazing = Vec3::new(0.9, 0.0, 0.19f32.sqrt());
+        let s = r.sample(grazing).unwrap();
+        assert!(!s.transmission && s.wi.z > 0.0);
+        assert!((s.weight() - Rgb::splat(0.9)).abs().max_element() < 1e-5);
+    }
+}

@@ -11,14 +11,74 @@ use super::{CameraInfo, Light, Material, MaterialId, Scene, Sphere, TriangleMesh
 /// The name under which [`cornell_box`] appears in messages.
 pub const CORNELL_BOX: &str = "built-in: cornell-box";
 
+/// The name under which [`materials_box`] appears in messages.
+pub const MATERIALS_BOX: &str = "built-in: materials-box";
+
 /// A Cornell box with two spheres, as the course frames its `CB*.dae`
 /// scenes: a box `[-1, 1] x [0, 1.5] x [-1, 1]` open towards +Z, red wall
 /// at -X, blue wall at +X, a 0.6 x 0.8 area light of radiance 10 under the
 /// ceiling (and an emissive quad in the same place, as the course files
 /// have), and two diffuse spheres of radius 0.3, one white, one pale
-/// yellow. (The mirror and glass of assignment 3-2 will replace them.)
+/// yellow.
 pub fn cornell_box() -> Scene {
     let mut builder = MeshBuilder::default();
+    let yellow = builder.material(Material::Diffuse {
+        albedo: Vec3::new(0.7, 0.65, 0.3),
+    });
+    let white = builder.material(Material::Diffuse {
+        albedo: Vec3::splat(0.6),
+    });
+    box_with_spheres(
+        builder,
+        CORNELL_BOX,
+        &[
+            (Vec3::new(-0.45, 0.3, -0.35), 0.3, yellow),
+            (Vec3::new(0.45, 0.3, 0.25), 0.3, white),
+        ],
+    )
+}
+
+/// The Cornell box of [`cornell_box`] with the materials of assignment
+/// 3-2: a mirror sphere (left, back), a glass sphere (right, front; index
+/// 1.5) and a rough copper sphere (centre, back; Beckmann roughness 0.15).
+/// Copper's index of refraction at the wavelengths 650, 550 and 450 nm is
+/// `eta = (0.200, 0.924, 1.102)`, `k = (3.913, 2.453, 2.142)` (Palik,
+/// *Handbook of Optical Constants of Solids*, 1985, as Mitsuba's `Cu` preset
+/// gives it in RGB).
+pub fn materials_box() -> Scene {
+    let mut builder = MeshBuilder::default();
+    let mirror = builder.material(Material::Mirror {
+        reflectance: Vec3::splat(0.95),
+    });
+    let glass = builder.material(Material::Glass {
+        reflectance: Vec3::ONE,
+        transmittance: Vec3::ONE,
+        roughness: 0.0,
+        ior: 1.5,
+    });
+    let copper = builder.material(Material::Microfacet {
+        alpha: 0.15,
+        eta: Vec3::new(0.200, 0.924, 1.102),
+        k: Vec3::new(3.913, 2.453, 2.142),
+    });
+    box_with_spheres(
+        builder,
+        MATERIALS_BOX,
+        &[
+            (Vec3::new(-0.5, 0.3, -0.4), 0.3, mirror),
+            (Vec3::new(0.45, 0.3, 0.3), 0.3, glass),
+            (Vec3::new(0.15, 0.22, -0.55), 0.22, copper),
+        ],
+    )
+}
+
+/// The box, its light and its camera around the given spheres
+/// `(centre, radius, material)`; `builder` may already hold materials.
+fn box_with_spheres(
+    mut builder: MeshBuilder,
+    name: &str,
+    spheres: &[(Vec3, f32, MaterialId)],
+) -> Scene {
     let white = builder.material(Material::Diffuse {
         albedo: Vec3::splat(0.6),
     });
@@ -30,9 +90,6 @@ pub fn cornell_box() -> Scene {
     });
     let light = builder.material(Material::Emission {
         radiance: Vec3::splat(10.0),
-    });
-    let yellow = builder.material(Material::Diffuse {
-        albedo: Vec3::new(0.7, 0.65, 0.3),
     });
     let (x0, x1, y0, y1, z0, z1) = (-1.0, 1.0, 0.0, 1.5, -1.0, 1.0);
     let ly = 1.49;
@@ -71,19 +128,15 @@ pub fn cornell_box() -> Scene {
     for (material, corners) in quads {
         builder.quad(material, corners.map(|(x, y, z)| Vec3::new(x, y, z)));
     }
-    let mut scene = builder.finish(CORNELL_BOX);
-    scene.spheres = vec![
-        Sphere {
-            center: Vec3::new(-0.45, 0.3, -0.35),
-            radius: 0.3,
-            material: yellow,
-        },
-        Sphere {
-            center: Vec3::new(0.45, 0.3, 0.25),
-            radius: 0.3,
-            material: white,
-        },
-    ];
+    let mut scene = builder.finish(name);
+    scene.spheres = spheres
+        .iter()
+        .map(|&(center, radius, material)| Sphere {
+            center,
+            radius,
+            material,
+        })
+        .collect();
     scene.lights = vec![Light::Area {
         radiance: Vec3::splat(10.0),
         center: Vec3::new(0.0, ly, 0.0),

@@ -6,6 +6,7 @@ use std::time::Instant;
 use super::{describe_or, prepare, report_render, write_film, Prepared, Result};
 use crate::adaptive::Adaptive;
 use crate::bvh::BvhAccel;
+use crate::cli::args::Builtin;
 use crate::cli::CourseArgs;
 use crate::direct::{DirectHemisphere, DirectLights};
 use crate::global::{DirectStrategy, PathTracer};
@@ -143,6 +144,20 @@ pub fn part5(args: &CourseArgs) -> Result<()> {
             tracer: path_tracer(args, scene),
             adaptive: Some(args.adaptive_settings()?.unwrap_or_default()),
             rate_image: true,
+        })
+    })
+}
+
+/// `part6-materials`: part 4's path tracer on mirror, glass and
+/// microfacet materials; with no scene file, the built-in materials box.
+pub fn part6(args: &CourseArgs) -> Result<()> {
+    let mut args = args.clone();
+    args.builtin = Builtin::MaterialsBox;
+    run(&args, |scene| {
+        Ok(Part {
+            tracer: path_tracer(&args, scene),
+            adaptive: None,
+            rate_image: false,
         })
     })
 }
