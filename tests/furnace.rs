@@ -101,6 +101,17 @@ fn geometric_sum(albedo: f64, radiance: f64, max_depth: u32) -> f64 {
     radiance * (1.0 - albedo.powi(max_depth as i32 + 1)) / (1.0 - albedo)
 }
 
+/// Paths of up to 200 bounces with Russian roulette: `a^201` is below
+/// 1e-19, so the sum is the infinite one.
+fn with_roulette(direct: DirectStrategy) -> PathTracer {
+    PathTracer {
+        direct,
+        max_depth: 200,
+        accumulate: true,
+        russian_roulette: true,
+    }
+}
+
 fn strategies() -> [(&'static str, DirectStrategy); 4] {
     [
         (
@@ -148,15 +159,9 @@ fn furnace_without_russian_roulette_sums_m_bounces() {
 fn furnace_with_russian_roulette_reaches_le_over_one_minus_a() {
     for albedo in [0.5, 0.8] {
         let scene = furnace(albedo as f32, 1.0);
-        // a^(m+1) is below 1e-19 at m = 200: the sum is the infinite one.
         let expected = 1.0 / (1.0 - albedo);
         for (name, direct) in strategies() {
-            let tracer = PathTracer {
-                direct,
-                max_depth: 200,
-                accumulate: true,
-                russian_roulette: true,
-            };
+            let tracer = with_roulette(direct);
             let est = estimate(&scene, &tracer, 20_000, 11);
             assert!(est.se > 0.0, "Russian roulette adds noise");
             let label = format!("{name}, a = {albedo}");
@@ -219,12 +224,7 @@ fn mirror_and_glass_spheres_are_invisible_in_a_furnace() {
             material: 1,
         });
         for (name, direct) in strategies() {
-            let tracer = PathTracer {
-                direct,
-                max_depth: 200,
-                accumulate: true,
-                russian_roulette: true,
-            };
+            let tracer = with_roulette(direct);
             let est = estimate(&scene, &tracer, 20_000, 17);
             let label = format!("{object}, {name}");
             assert_mean_matches(&label, est, expected, ALPHA / 12.0, 0.0);

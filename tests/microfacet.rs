@@ -18,7 +18,7 @@
 
 mod common;
 
-use common::{z_two_sided, MeanEstimate, ALPHA};
+use common::{assert_means_agree_within, z_two_sided, MeanEstimate, ALPHA};
 use glam::{Vec2, Vec3};
 use pathtracer::materials::{Conductor, MicrofacetSampling};
 use pathtracer::math::rng::{next_2d, sampler};
@@ -106,23 +106,9 @@ fn the_two_strategies_estimate_the_same_albedo() {
             // Near a mirror both estimators are nearly constant (standard
             // errors down to 1e-10), below the f32 rounding of `F` and `G`
             // at the rounded half vector: a floor of 1e-5 absorbs it.
-            let se = half.se.hypot(visible.se);
-            let limit = z_two_sided(alpha_each) * se + 1e-5;
-            eprintln!(
-                "copper, alpha {alpha}, cos_o {cos_o}: {:.6} vs {:.6} ({:+.2} se)",
-                half.mean,
-                visible.mean,
-                (half.mean - visible.mean) / se
-            );
-            assert!(
-                (half.mean - visible.mean).abs() <= limit,
-                "alpha {alpha}, cos_o {cos_o}: half-vector {} (se {:.1e}) and visible-normal {} \
-                 (se {:.1e}) estimates differ by more than {limit:.2e}",
-                half.mean,
-                half.se,
-                visible.mean,
-                visible.se
-            );
+            let label =
+                format!("copper, alpha {alpha}, cos_o {cos_o}: half-vector and visible-normal");
+            assert_means_agree_within(&label, half, visible, alpha_each, 1e-5);
         }
     }
 }

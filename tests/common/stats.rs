@@ -79,6 +79,18 @@ pub fn assert_mean_matches(
 /// Two-sample z-test of equal means for independent estimates: asserts
 /// `|a - b| <= z sqrt(se_a^2 + se_b^2)` at significance `alpha`.
 pub fn assert_means_agree(label: &str, a: MeanEstimate, b: MeanEstimate, alpha: f64) {
+    assert_means_agree_within(label, a, b, alpha, 0.0);
+}
+
+/// [`assert_means_agree`] with the limit widened by `abs_floor` (for
+/// estimators whose variance is zero up to rounding).
+pub fn assert_means_agree_within(
+    label: &str,
+    a: MeanEstimate,
+    b: MeanEstimate,
+    alpha: f64,
+    abs_floor: f64,
+) {
     let z = z_two_sided(alpha);
     let se = (a.se * a.se + b.se * b.se).sqrt();
     eprintln!(
@@ -88,8 +100,8 @@ pub fn assert_means_agree(label: &str, a: MeanEstimate, b: MeanEstimate, alpha: 
         (a.mean - b.mean) / se
     );
     assert!(
-        (a.mean - b.mean).abs() <= z * se,
-        "{label}: {:.6} (se {:.2e}) and {:.6} (se {:.2e}) differ by {:.2} standard errors (limit {z:.2})",
+        (a.mean - b.mean).abs() <= z * se + abs_floor,
+        "{label}: {:.6} (se {:.2e}) and {:.6} (se {:.2e}) differ by {:.2} standard errors (limit {z:.2} and {abs_floor:.1e})",
         a.mean,
         a.se,
         b.mean,
