@@ -22,6 +22,7 @@
 pub mod adaptive;
 pub mod bvh;
 pub mod cli;
+pub mod depth_of_field;
 pub mod direct;
 pub mod global;
 pub mod intersect;

@@ -50,7 +50,8 @@ fn cbbunny_light_lands_where_the_course_render_has_it() {
     })
     .unwrap();
     let ours = pixel_bounds(w, h, |x, y| {
-        let ray = pixel_ray(camera, w, h, x, y, glam::Vec2::splat(0.5));
+        let centre = glam::Vec2::splat(0.5);
+        let ray = pixel_ray(camera, (w, h), (x, y), centre, centre);
         accel.intersect(&ray).is_some_and(|hit| {
             matches!(
                 scene.materials[hit.material as usize],

@@ -146,6 +146,17 @@ fn part6_materials() {
 }
 
 #[test]
+fn part8_depth_of_field() {
+    assert_close_to_snapshot(
+        "part8-dof",
+        &render_with(
+            drivers::part8,
+            &["-s", "8", "-m", "3", "-b", "0.15", "-d", "4.5"],
+        ),
+    );
+}
+
+#[test]
 fn renders_do_not_depend_on_the_thread_count() {
     let one = render_with(drivers::pathtracer, &["-s", "4", "-t", "1"]);
     let two = render_with(drivers::pathtracer, &["-s", "4", "-t", "2"]);

@@ -96,7 +96,7 @@ impl Setup {
         let sees_emitter = |x, y| {
             (0..64).any(|k| {
                 let offset = Vec2::new((k % 8) as f32 + 0.5, (k / 8) as f32 + 0.5) / 8.0;
-                let ray = pixel_ray(&self.camera, w, h, x, y, offset);
+                let ray = pixel_ray(&self.camera, (w, h), (x, y), offset, Vec2::splat(0.5));
                 scene
                     .trace(&ray)
                     .is_some_and(|p| p.emission != pathtracer::math::Rgb::ZERO)

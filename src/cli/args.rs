@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 use clap::Parser;
 
 use crate::adaptive::Adaptive;
+use crate::depth_of_field::{ThinLens, COURSE_FOCAL_DISTANCE};
 use crate::lights::LightConvention;
 use crate::materials::{BsdfOptions, FresnelModel, MicrofacetSampling};
 use crate::render::RenderSettings;
@@ -94,6 +95,21 @@ pub struct CourseArgs {
     #[arg(long)]
     pub half_vector: bool,
 
+    /// Lens radius (thin-lens depth of field, part 8); 0 is a pinhole.
+    #[arg(short = 'b', value_name = "RADIUS", default_value_t = 0.0,
+          value_parser = non_negative)]
+    pub lens_radius: f32,
+
+    /// Focal distance: the distance of the plane in focus (part 8).
+    #[arg(short = 'd', value_name = "DISTANCE", default_value_t = COURSE_FOCAL_DISTANCE,
+          value_parser = positive)]
+    pub focal_distance: f32,
+
+    /// Focus on the surface seen through pixel (X, Y) (row 0 at the top):
+    /// sets -d to its distance (printed with --info).
+    #[arg(long, num_args = 2, value_names = ["X", "Y"])]
+    pub focus_at: Option<Vec<u32>>,
+
     /// Print what the scene holds, one item a line, and exit.
     #[arg(long)]
     pub info: bool,
@@ -105,6 +121,22 @@ pub struct CourseArgs {
     /// Seed of the render's random numbers.
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
+}
+
+/// A finite number `>= 0`.
+fn non_negative(s: &str) -> Result<f32, String> {
+    match s.parse::<f32>() {
+        Ok(v) if v.is_finite() && v >= 0.0 => Ok(v),
+        _ => Err(format!("expected a finite number of at least 0, not {s}")),
+    }
+}
+
+/// A finite number `> 0`.
+fn positive(s: &str) -> Result<f32, String> {
+    match s.parse::<f32>() {
+        Ok(v) if v.is_finite() && v > 0.0 => Ok(v),
+        _ => Err(format!("expected a finite positive number, not {s}")),
+    }
 }
 
 /// The built-in scenes a binary renders when no scene file is given.
@@ -202,6 +234,14 @@ impl CourseArgs {
             batch: batch as u32,
             tolerance,
         }))
+    }
+
+    /// The thin lens of `-b` and `-d`.
+    pub fn lens(&self) -> ThinLens {
+        ThinLens {
+            radius: self.lens_radius,
+            focal_distance: self.focal_distance,
+        }
     }
 
     /// How the scene's lights and BSDFs behave under these flags.

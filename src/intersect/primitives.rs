@@ -1,7 +1,7 @@
 //! Every shape of a scene, packed for intersection.
 //!
 //! Primitive ids: triangles `0..T` in mesh order, then spheres `T..T+S`.
-//! The hot loop only needs [`Shape`] (a triangle's vertex and edges, or a
+//! The hot loop only needs [`Shape`] (a triangle's three corners, or a
 //! sphere's centre and radius); the rest of the hit record (point, normals,
 //! error bound) is computed once, for the closest hit, by
 //! [`Primitives::finish_hit`].

@@ -17,8 +17,9 @@
 //! `D = 600 / (2 tan(vFov / 2))`, and for a `W x H` image uses
 //! `hFov = 2 atan(W / 2D)`, `vFov = 2 atan(H / 2D)`.
 
-use glam::{Mat3, Vec3};
+use glam::{Mat3, Vec2, Vec3};
 
+use crate::depth_of_field::ThinLens;
 use crate::intersect::{Aabb, Ray};
 use crate::scene::CameraInfo;
 
@@ -28,7 +29,26 @@ pub const COURSE_WINDOW: (u32, u32) = (800, 600);
 /// `EPS_F` of the course: nudges the polar angle off the poles.
 const POLE_EPSILON: f32 = 1e-5;
 
-/// A pinhole camera.
+/// Where on the film and on the lens a camera ray starts: the normalised
+/// image point (`[0, 1]^2`, `y = 0` at the bottom) and a point in
+/// `[0, 1)^2` that a thin lens maps to its disk (ignored by a pinhole).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CameraSample {
+    pub film: Vec2,
+    pub lens: Vec2,
+}
+
+impl CameraSample {
+    /// The sample at film point `film` through the lens centre.
+    pub fn at(film: Vec2) -> Self {
+        CameraSample {
+            film,
+            lens: Vec2::splat(0.5),
+        }
+    }
+}
+
+/// A pinhole camera, or with [`Camera::lens`] a thin-lens one.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Camera {
     /// Eye position, world space.
@@ -42,6 +62,8 @@ pub struct Camera {
     pub vfov_deg: f32,
     pub znear: f32,
     pub zfar: f32,
+    /// The lens (part 8); a pinhole by default.
+    pub lens: ThinLens,
 }
 
 impl Camera {
@@ -57,6 +79,7 @@ impl Camera {
             vfov_deg,
             znear: 0.0,
             zfar: f32::INFINITY,
+            lens: ThinLens::PINHOLE,
         }
     }
 
@@ -90,19 +113,46 @@ impl Camera {
             vfov_deg,
             znear: info.znear,
             zfar: info.zfar,
+            lens: ThinLens::PINHOLE,
         }
     }
 
-    /// The camera ray through the normalised image point `(x, y)`,
-    /// `y = 0` at the bottom.
-    #[doc(alias = "generate_ray")]
-    pub fn ray(&self, x: f32, y: f32) -> Ray {
+    /// The same camera with the thin lens `lens`.
+    pub fn with_lens(self, lens: ThinLens) -> Self {
+        Camera { lens, ..self }
+    }
+
+    /// The pinhole direction through the normalised image point `(x, y)`,
+    /// camera space, with `z = -1`.
+    fn film_direction(&self, x: f32, y: f32) -> Vec3 {
         let tan_h = (0.5 * self.hfov_deg.to_radians()).tan();
         let tan_v = (0.5 * self.vfov_deg.to_radians()).tan();
-        let d_cam = Vec3::new((2.0 * x - 1.0) * tan_h, (2.0 * y - 1.0) * tan_v, -1.0);
+        Vec3::new((2.0 * x - 1.0) * tan_h, (2.0 * y - 1.0) * tan_v, -1.0)
+    }
+
+    /// The pinhole ray through the normalised image point `(x, y)`,
+    /// `y = 0` at the bottom (the lens, if any, is not used).
+    pub fn ray(&self, x: f32, y: f32) -> Ray {
         Ray {
             origin: self.position,
-            dir: (self.c2w * d_cam).normalize(),
+            dir: (self.c2w * self.film_direction(x, y)).normalize(),
+            t_min: self.znear,
+            t_max: self.zfar,
+        }
+    }
+
+    /// The camera ray of `sample`: through the lens point it picks when
+    /// the camera has a lens ([`ThinLens::ray`]), else the pinhole ray.
+    #[doc(alias = "generate_ray_for_thin_lens")]
+    pub fn generate_ray(&self, sample: &CameraSample) -> Ray {
+        let d_cam = self.film_direction(sample.film.x, sample.film.y);
+        if self.lens.is_pinhole() {
+            return self.ray(sample.film.x, sample.film.y);
+        }
+        let (origin, dir) = self.lens.ray(d_cam, sample.lens);
+        Ray {
+            origin: self.position + self.c2w * origin,
+            dir: (self.c2w * dir).normalize(),
             t_min: self.znear,
             t_max: self.zfar,
         }

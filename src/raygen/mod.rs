@@ -7,5 +7,5 @@
 pub mod camera;
 pub mod normal_shading;
 
-pub use camera::Camera;
+pub use camera::{Camera, CameraSample};
 pub use normal_shading::NormalShading;

@@ -24,20 +24,28 @@ use glam::Vec2;
 use crate::intersect::Ray;
 use crate::math::rng::{next_2d, Sampler};
 use crate::math::Rgb;
-use crate::raygen::Camera;
+use crate::raygen::{Camera, CameraSample};
 
 /// The camera ray through pixel `(x, y)` (row 0 at the top of the image)
-/// at the sub-pixel offset `offset` in `[0, 1)^2`.
+/// at the sub-pixel offset `offset` in `[0, 1)^2`, through the lens point
+/// `lens` in `[0, 1)^2` if the camera has a lens.
 ///
 /// The course samples the normalised point `((x + u) / w, (y' + v) / h)`
 /// with `y'` counted from the bottom row.
 #[doc(alias = "generate_ray")]
-pub fn pixel_ray(camera: &Camera, width: u32, height: u32, x: u32, y: u32, offset: Vec2) -> Ray {
+pub fn pixel_ray(
+    camera: &Camera,
+    (width, height): (u32, u32),
+    (x, y): (u32, u32),
+    offset: Vec2,
+    lens: Vec2,
+) -> Ray {
     let y_from_bottom = (height - 1 - y) as f32;
-    camera.ray(
+    let film = Vec2::new(
         (x as f32 + offset.x) / width as f32,
         (y_from_bottom + offset.y) / height as f32,
-    )
+    );
+    camera.generate_ray(&CameraSample { film, lens })
 }
 
 /// What a pixel's samples gave.
@@ -77,7 +85,14 @@ pub fn estimate_pixel(
         } else {
             next_2d(rng)
         };
-        let l = radiance(&pixel_ray(camera, width, height, x, y, offset), rng);
+        // A lens sample only for a lens, so pinhole renders stay as they were.
+        let lens = if camera.lens.is_pinhole() {
+            Vec2::splat(0.5)
+        } else {
+            next_2d(rng)
+        };
+        let ray = pixel_ray(camera, (width, height), (x, y), offset, lens);
+        let l = radiance(&ray, rng);
         estimate.samples += 1;
         if !l.is_finite() {
             estimate.rejected += 1;

@@ -94,14 +94,9 @@ pub fn measure_speedup(accel: &BvhAccel, camera: &Camera, settings: &RenderSetti
     let rays: Vec<Ray> = (0..pixels)
         .step_by(stride)
         .map(|i| {
-            pixel_ray(
-                camera,
-                w,
-                h,
-                (i % w as usize) as u32,
-                (i / w as usize) as u32,
-                glam::Vec2::splat(0.5),
-            )
+            let centre = glam::Vec2::splat(0.5);
+            let pixel = ((i % w as usize) as u32, (i / w as usize) as u32);
+            pixel_ray(camera, (w, h), pixel, centre, centre)
         })
         .collect();
     let time = |intersector: &dyn Intersector| {

@@ -162,6 +162,18 @@ pub fn part6(args: &CourseArgs) -> Result<()> {
     })
 }
 
+/// `part8-dof`: part 4's path tracer through a thin lens (`-b`, `-d`,
+/// `--focus-at`).
+pub fn part8(args: &CourseArgs) -> Result<()> {
+    run(args, |scene| {
+        Ok(Part {
+            tracer: path_tracer(args, scene),
+            adaptive: None,
+            rate_image: false,
+        })
+    })
+}
+
 /// `pathtracer`: parts 1 to 5 with the course's flags; adaptive sampling
 /// only with `-a`, the sample-rate image always (as the course writes it).
 pub fn pathtracer(args: &CourseArgs) -> Result<()> {

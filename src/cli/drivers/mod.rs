@@ -7,12 +7,12 @@ pub mod lighting;
 pub use geometry::{
     bvh_benchmark, bvh_scaling, measure_speedup, part1, part2, render_normals, Speedup,
 };
-pub use lighting::{part3, part4, part5, part6, pathtracer, render_lighting};
+pub use lighting::{part3, part4, part5, part6, part8, pathtracer, render_lighting};
 
 use std::error::Error;
 
 use super::CourseArgs;
-use crate::intersect::Primitives;
+use crate::intersect::{Intersector, LinearScan, Primitives};
 use crate::raygen::Camera;
 use crate::render::Rendered;
 use crate::scene::info::describe;
@@ -38,17 +38,52 @@ pub fn prepare(args: &CourseArgs) -> Result<Prepared> {
         eprintln!("warning: {}: {warning}", scene.source);
     }
     let primitives = Primitives::from_scene(&scene);
-    let camera = Camera::course_placement(
+    let pinhole = Camera::course_placement(
         &scene.camera,
         &primitives.bounds(),
         args.width(),
         args.height(),
     );
+    let mut lens = args.lens();
+    if let Some(pixel) = &args.focus_at {
+        let (x, y) = (pixel[0], pixel[1]);
+        let size = (args.width(), args.height());
+        let distance = focus_distance(&pinhole, &primitives, size, (x, y))?;
+        if args.info {
+            println!("focus: pixel ({x}, {y}) sees a surface at distance {distance:.4} (-d {distance:.4})");
+        }
+        lens.focal_distance = distance;
+    }
+    let camera = pinhole.with_lens(lens);
     Ok(Prepared {
         scene,
         primitives,
         camera,
     })
+}
+
+/// The distance along the view axis from `camera` to the surface seen
+/// through the centre of pixel `(x, y)` of a `size` image: the `-d` that
+/// puts that surface in focus (`--focus-at X Y`).
+pub fn focus_distance(
+    camera: &Camera,
+    primitives: &Primitives,
+    size: (u32, u32),
+    (x, y): (u32, u32),
+) -> Result<f32> {
+    if x >= size.0 || y >= size.1 {
+        return Err(format!(
+            "--focus-at {x} {y}: the pixel is outside the {}x{} image",
+            size.0, size.1
+        )
+        .into());
+    }
+    let centre = glam::Vec2::splat(0.5);
+    let ray = crate::render::pixel_ray(camera, size, (x, y), centre, centre);
+    let hit = LinearScan::new(primitives)
+        .intersect(&ray)
+        .ok_or_else(|| format!("--focus-at {x} {y}: the pixel sees no surface"))?;
+    Ok((hit.p - camera.position).dot(camera.view_direction()))
 }
 
 /// Fails, before any render, when the image `-f` (or the default name)
