@@ -29,6 +29,7 @@ pub mod intersect;
 pub mod lights;
 pub mod materials;
 pub mod math;
+pub mod plan;
 pub mod raygen;
 pub mod render;
 pub mod scene;

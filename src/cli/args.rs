@@ -110,7 +110,12 @@ pub struct CourseArgs {
     #[arg(long, num_args = 2, value_names = ["X", "Y"])]
     pub focus_at: Option<Vec<u32>>,
 
-    /// Print what the scene holds, one item a line, and exit.
+    /// Render with the general integrator, not the one specialised to
+    /// what the scene calls for (the plan of --info), to compare them.
+    #[arg(long)]
+    pub no_plan: bool,
+
+    /// Print what the scene holds and the render plan, one item a line, and exit.
     #[arg(long)]
     pub info: bool,
 

@@ -3,7 +3,7 @@
 
 use std::time::Instant;
 
-use super::{describe_or, prepare, report_render, write_film, Prepared, Result};
+use super::{prepare, report_render, write_film, Prepared, Result};
 use crate::adaptive::Adaptive;
 use crate::bvh::BvhAccel;
 use crate::cli::args::Builtin;
@@ -11,9 +11,12 @@ use crate::cli::CourseArgs;
 use crate::direct::{DirectHemisphere, DirectLights};
 use crate::global::{DirectStrategy, PathTracer};
 use crate::intersect::Intersector;
+use crate::lights::LightSet;
+use crate::plan::Plan;
 use crate::raygen::Camera;
 use crate::render::rendered::rate_image_path;
 use crate::render::{render_image, RenderSettings, Rendered};
+use crate::scene::info::describe;
 use crate::scene::Scene;
 use crate::world::World;
 
@@ -59,15 +62,22 @@ struct Part {
 }
 
 fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
-    let Some(Prepared {
+    let Prepared {
         scene,
         primitives,
         camera,
-    }) = describe_or(prepare(args)?, args)
-    else {
-        return Ok(());
-    };
+    } = prepare(args)?;
     let part = part(&scene)?;
+    if args.info {
+        print!("{}", describe(&scene, &camera));
+        let lights = LightSet::new(&scene, args.world_options().light_convention);
+        let plan = Plan::new(&scene, &lights, &part.tracer, &camera.lens);
+        plan.lines.iter().for_each(|line| println!("{line}"));
+        plan.warnings
+            .iter()
+            .for_each(|w| println!("plan: note: {w}"));
+        return Ok(());
+    }
     let start = Instant::now();
     let accel = BvhAccel::new(primitives);
     println!(
@@ -76,8 +86,17 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
         start.elapsed().as_secs_f64()
     );
     let world = World::with_options(&scene, &accel, args.world_options());
+    let plan = Plan::new(&scene, &world.lights, &part.tracer, &camera.lens);
+    for warning in &plan.warnings {
+        eprintln!("warning: {}: {warning}", scene.source);
+    }
+    let tracer = if args.no_plan {
+        part.tracer
+    } else {
+        plan.specialise(&part.tracer)
+    };
     let settings = args.render_settings();
-    let rendered = render_lighting(&world, &part.tracer, &camera, &settings, part.adaptive);
+    let rendered = render_lighting(&world, &tracer, &camera, &settings, part.adaptive);
     report_render(&rendered);
     match rendered.relative_error() {
         Some(e) => println!("noise: relative standard error {:.2} % (RMS of pixel standard errors / mean luminance)", 100.0 * e),

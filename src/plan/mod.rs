@@ -1,0 +1,211 @@
+//! The render plan: which effects the scene calls for, decided once from
+//! the scene, its lights and the flags, so that the integrator simulates
+//! only those (`--info` prints it, one `plan:` line per decision).
+//!
+//! | decision | when | what it saves |
+//! | --- | --- | --- |
+//! | light sampling | some light can be sampled and some surface scatters non-deltas | shadow rays where nothing could be found |
+//! | multiple importance sampling | a light BSDF rays can find (area, emissive triangles, sky) and a non-delta BSDF | the BSDF density per light sample and the last ray of every path |
+//! | lens | `-b > 0` | the lens sample and its disk warp per camera ray |
+//!
+//! Specialising changes no expectation: the plan only drops work whose
+//! result is zero or whose weight is 1 (MIS with no second strategy). The
+//! plan also says when a flag hides an effect the scene has: a mirror shows
+//! lit surfaces only from `-m 2`, glass shows light through it from `-m 3`.
+
+use crate::depth_of_field::ThinLens;
+use crate::direct::DirectLights;
+use crate::global::{DirectStrategy, PathTracer};
+use crate::lights::{Light, LightSet};
+use crate::materials::{Bsdf, BsdfOptions};
+use crate::math::Rgb;
+use crate::scene::{Material, Scene};
+
+/// The kinds of scattering a scene's used materials have.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct BsdfKinds {
+    pub diffuse: bool,
+    /// Mirror, refraction or glass: every lobe a delta.
+    pub delta: bool,
+    /// Microfacet: a non-delta lobe that is not diffuse.
+    pub glossy: bool,
+    pub mirror: bool,
+    /// Glass or refraction.
+    pub transmission: bool,
+}
+
+impl BsdfKinds {
+    /// The kinds of the materials some primitive of `scene` uses.
+    pub fn of(scene: &Scene) -> Self {
+        let mut used = vec![false; scene.materials.len()];
+        let ids = scene
+            .mesh
+            .materials
+            .iter()
+            .chain(scene.spheres.iter().map(|s| &s.material));
+        for &m in ids {
+            if let Some(u) = used.get_mut(m as usize) {
+                *u = true;
+            }
+        }
+        let mut kinds = BsdfKinds::default();
+        for (material, _) in scene.materials.iter().zip(&used).filter(|(_, &u)| u) {
+            match Bsdf::new(material, true, BsdfOptions::default()) {
+                Bsdf::Black => {}
+                Bsdf::Diffuse(d) if d.albedo == Rgb::ZERO => {}
+                Bsdf::Diffuse(_) => kinds.diffuse = true,
+                Bsdf::Conductor(_) => kinds.glossy = true,
+                bsdf => {
+                    kinds.delta |= bsdf.is_delta();
+                    kinds.mirror |= matches!(material, Material::Mirror { .. });
+                    kinds.transmission |= matches!(
+                        material,
+                        Material::Glass { .. } | Material::Refraction { .. }
+                    );
+                }
+            }
+        }
+        kinds
+    }
+
+    /// Whether some surface scatters light with a non-delta lobe.
+    pub fn scatters(&self) -> bool {
+        self.diffuse || self.glossy
+    }
+}
+
+/// What a render simulates, and why.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Plan {
+    pub bsdfs: BsdfKinds,
+    /// Names of the kinds of light, in the light set's order, deduplicated.
+    pub light_kinds: Vec<&'static str>,
+    /// Whether some light is not a delta (so BSDF rays can find light).
+    pub area_lights: bool,
+    pub light_sampling: bool,
+    pub mis: bool,
+    pub lens: bool,
+    /// One line per decision, `plan: ...`.
+    pub lines: Vec<String>,
+    /// Effects the flags hide, one line each.
+    pub warnings: Vec<String>,
+}
+
+impl Plan {
+    /// The plan for rendering `scene` with `lights` by `tracer` through `lens`.
+    pub fn new(scene: &Scene, lights: &LightSet, tracer: &PathTracer, lens: &ThinLens) -> Self {
+        let bsdfs = BsdfKinds::of(scene);
+        let mut light_kinds: Vec<&'static str> = Vec::new();
+        for light in &lights.lights {
+            if !light_kinds.contains(&light.kind()) {
+                light_kinds.push(light.kind());
+            }
+        }
+        let sampled = |l: &&Light| !matches!(l, Light::Spot(_));
+        let area_lights = lights.lights.iter().any(|l| !l.is_delta());
+        let light_sampling = matches!(tracer.direct, DirectStrategy::Lights(_))
+            && lights.lights.iter().any(|l| sampled(&l))
+            && bsdfs.scatters();
+        let mis = light_sampling && tracer.direct.mis() && area_lights;
+        let mut lines = vec![
+            format!(
+                "plan: lights: {} ({})",
+                if light_kinds.is_empty() {
+                    "none".to_string()
+                } else {
+                    light_kinds.join(", ")
+                },
+                if area_lights {
+                    "some have an area or are at infinity: BSDF rays can find them"
+                } else {
+                    "delta lights only: only light sampling finds them"
+                }
+            ),
+            format!("plan: materials: {}", bsdf_summary(&bsdfs)),
+        ];
+        lines.push(match tracer.direct {
+            DirectStrategy::Lights(_) if light_sampling => {
+                "plan: light sampling: on (lights to sample and surfaces that scatter)".into()
+            }
+            DirectStrategy::Lights(_) => {
+                "plan: light sampling: off (no light to sample or no surface that scatters non-delta)"
+                    .into()
+            }
+            DirectStrategy::Hemisphere(_) => "plan: light sampling: off (-H: hemisphere rays)".into(),
+            DirectStrategy::BsdfOnly => "plan: light sampling: off (--bsdf-only)".into(),
+        });
+        lines.push(if mis {
+            "plan: MIS: on (lights with an area and surfaces that scatter non-delta)".into()
+        } else if tracer.direct.mis() {
+            "plan: MIS: off (no second strategy could find the lights: no BSDF density per light sample, no last ray)".into()
+        } else {
+            "plan: MIS: off (not asked for)".into()
+        });
+        lines.push(if lens.is_pinhole() {
+            "plan: camera: pinhole (-b 0: no lens sample)".into()
+        } else {
+            format!(
+                "plan: camera: thin lens of radius {} focused at {}",
+                lens.radius, lens.focal_distance
+            )
+        });
+        let mut warnings = Vec::new();
+        let m = tracer.max_depth;
+        if bsdfs.mirror && m < 2 {
+            warnings.push(format!(
+                "-m {m}: a mirror shows lit surfaces only from -m 2 on"
+            ));
+        }
+        if bsdfs.transmission && m < 3 {
+            warnings.push(format!(
+                "-m {m}: glass shows light through it only from -m 3 on"
+            ));
+        }
+        if matches!(tracer.direct, DirectStrategy::Hemisphere(_))
+            && lights.lights.iter().any(|l| l.is_delta() && sampled(&l))
+        {
+            warnings.push("-H: hemisphere rays cannot find point or directional lights".into());
+        }
+        Plan {
+            bsdfs,
+            light_kinds,
+            area_lights,
+            light_sampling,
+            mis,
+            lens: !lens.is_pinhole(),
+            lines,
+            warnings,
+        }
+    }
+
+    /// `tracer` specialised to the plan: MIS off where no second strategy
+    /// could find the lights. The estimate's expectation does not change.
+    pub fn specialise(&self, tracer: &PathTracer) -> PathTracer {
+        let mut t = *tracer;
+        if let DirectStrategy::Lights(d) = tracer.direct {
+            t.direct = DirectStrategy::Lights(DirectLights {
+                mis: d.mis && self.mis,
+                ..d
+            });
+        }
+        t
+    }
+}
+
+fn bsdf_summary(k: &BsdfKinds) -> String {
+    let mut kinds = Vec::new();
+    if k.diffuse {
+        kinds.push("diffuse");
+    }
+    if k.glossy {
+        kinds.push("glossy");
+    }
+    if k.delta {
+        kinds.push("delta (mirror, glass)");
+    }
+    if kinds.is_empty() {
+        "nothing scatters".into()
+    } else {
+        kinds.join(", ")
+    }
+}

@@ -1,0 +1,115 @@
+//! The render plan: what it decides for a scene, and that the integrator
+//! it specialises estimates the same radiance as the general one
+//! (two-sample z-tests, fixed seeds, [`ALPHA`] = 1e-4 over the file's
+//! comparisons).
+
+mod common;
+
+use common::*;
+use glam::Vec3;
+use pathtracer::depth_of_field::ThinLens;
+use pathtracer::lights::{LightConvention, LightSet};
+use pathtracer::plan::Plan;
+use pathtracer::scene::builtin::materials_box;
+use pathtracer::scene::{Light, Material, Scene};
+use pathtracer::world::World;
+
+/// A diffuse floor under a wall, lit by a point light only.
+fn point_lit() -> Scene {
+    let mut b = SceneBuilder::new();
+    let grey = b.material(diffuse(0.7));
+    b.quad(
+        grey,
+        [
+            Vec3::new(-2.0, 0.0, -2.0),
+            Vec3::new(2.0, 0.0, -2.0),
+            Vec3::new(2.0, 0.0, 2.0),
+            Vec3::new(-2.0, 0.0, 2.0),
+        ],
+    );
+    b.quad(
+        grey,
+        [
+            Vec3::new(-2.0, 0.0, -1.0),
+            Vec3::new(-2.0, 2.0, -1.0),
+            Vec3::new(2.0, 2.0, -1.0),
+            Vec3::new(2.0, 0.0, -1.0),
+        ],
+    );
+    b.light(Light::Point {
+        intensity: Vec3::splat(3.0),
+        position: Vec3::new(0.3, 1.2, 0.4),
+    });
+    b.finish()
+}
+
+fn plan_of(scene: &Scene, max_depth: u32) -> Plan {
+    let lights = LightSet::new(scene, LightConvention::Physical);
+    Plan::new(
+        scene,
+        &lights,
+        &tracer(LIGHTS, max_depth, true),
+        &ThinLens::PINHOLE,
+    )
+}
+
+#[test]
+fn the_plan_names_what_the_scene_calls_for() {
+    let point = plan_of(&point_lit(), 3);
+    assert!(point.bsdfs.diffuse && !point.bsdfs.glossy && !point.bsdfs.delta);
+    assert_eq!(point.light_kinds, vec!["point"]);
+    assert!(
+        point.light_sampling && !point.mis,
+        "delta lights only: no MIS"
+    );
+    assert!(point.warnings.is_empty());
+    assert!(point.lines.iter().all(|l| l.starts_with("plan: ")));
+
+    let box_plan = plan_of(&materials_box(), 1);
+    assert!(box_plan.bsdfs.diffuse && box_plan.bsdfs.glossy && box_plan.bsdfs.delta);
+    assert!(box_plan.mis, "an area light and scattering surfaces");
+    assert_eq!(box_plan.warnings.len(), 2, "{:?}", box_plan.warnings);
+    assert!(plan_of(&materials_box(), 3).warnings.is_empty());
+
+    // Nothing scatters non-delta: no light sampling at all.
+    let mut mirrors = materials_box();
+    for m in &mut mirrors.materials {
+        if matches!(m, Material::Diffuse { .. } | Material::Microfacet { .. }) {
+            *m = Material::Mirror {
+                reflectance: Vec3::splat(0.9),
+            };
+        }
+    }
+    let p = plan_of(&mirrors, 5);
+    assert!(!p.light_sampling && !p.mis && p.bsdfs.delta && !p.bsdfs.scatters());
+}
+
+/// The specialised integrator (MIS off where nothing else finds the
+/// lights) and the general one agree: on the point-lit scene, where the
+/// plan changes the integrator, at two points; and the plan leaves the
+/// materials box's integrator as it is.
+#[test]
+fn the_specialised_integrator_agrees_with_the_general_one() {
+    let scene = point_lit();
+    let bvh = accel(&scene);
+    let world = World::new(&scene, &bvh);
+    let general = tracer(LIGHTS, 4, true);
+    let plan = Plan::new(&scene, &world.lights, &general, &ThinLens::PINHOLE);
+    let specialised = plan.specialise(&general);
+    assert!(general.direct.mis() && !specialised.direct.mis());
+    let eye = Vec3::new(0.0, 1.0, 2.5);
+    for (i, target) in [Vec3::new(0.2, 0.0, 0.1), Vec3::new(-0.5, 0.8, -1.0)]
+        .into_iter()
+        .enumerate()
+    {
+        let ray = ray_towards(eye, target);
+        let a = estimate(&world, &general, &ray, 50_000, 60 + i as u64);
+        let b = estimate(&world, &specialised, &ray, 50_000, 70 + i as u64);
+        assert_means_agree(&format!("point-lit point {i}"), a, b, ALPHA / 2.0);
+    }
+    let materials = materials_box();
+    let bvh = accel(&materials);
+    let world = World::new(&materials, &bvh);
+    let plan = Plan::new(&materials, &world.lights, &general, &ThinLens::PINHOLE);
+    assert!(plan.specialise(&general).direct.mis());
+}
