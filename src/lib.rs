@@ -11,11 +11,16 @@
 //! | 3 direct lighting | [`direct`] (hemisphere, light sampling) | `part3-direct` | `docs/04-direct.md` |
 //! | 4 global illumination | [`global`] (path tracing, Russian roulette) | `part4-global` | `docs/05-global.md` |
 //! | 5 adaptive sampling | [`adaptive`] | `part5-adaptive` | `docs/06-adaptive.md` |
+//! | 3-2 mirror, glass, microfacet | [`materials`] (BSDFs, Fresnel, Beckmann) | `part6-materials` | `docs/07-materials.md` |
 //!
-//! Support modules: [`math`] (colours, frames, warps, floating-point
-//! helpers), [`materials`] (BSDFs), [`scene`] (scene model, the COLLADA
-//! loader, built-in scenes), [`render`] (film, tiles, threads, progress,
-//! PNG/EXR output), [`cli`] (the course's flags and what each binary does).
+//! Support modules: [`math`] (colours, frames, warps, MIS weights,
+//! floating-point helpers), [`lights`] (the light set every part samples:
+//! one interface for every kind of light, built once per render),
+//! [`world`] (the scene as the renderer sees it: intersector, shading
+//! points, which light a surface belongs to), [`scene`] (scene model, the
+//! COLLADA loader, built-in scenes), [`render`] (film, tiles, threads,
+//! progress, PNG/EXR output), [`cli`] (the course's flags and what each
+//! binary does).
 //!
 //! Conventions are in `docs/00-conventions.md`.
 

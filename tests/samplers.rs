@@ -282,6 +282,16 @@ fn conductor_families() -> Vec<Family> {
             }
         }
     }
+    // The cosine-weighted baseline ignores the lobe; two roughnesses.
+    for alpha in [0.1, 1.0] {
+        for cos_o in [1.0, 0.5] {
+            families.push(conductor_family(
+                alpha,
+                cos_o,
+                MicrofacetSampling::CosineHemisphere,
+            ));
+        }
+    }
     families
 }
 

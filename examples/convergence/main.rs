@@ -1,5 +1,6 @@
-//! Convergence studies of parts 3 to 5: error against time, as PNG charts
-//! and Markdown tables (docs/04-direct.md, 05-global.md, 06-adaptive.md).
+//! Convergence studies of parts 3 to 6: error against time, as PNG charts
+//! and Markdown tables (docs/04-direct.md, 05-global.md, 06-adaptive.md,
+//! 07-materials.md).
 //!
 //! ```text
 //! cargo run --release --example convergence -- STUDY [--out DIR] [--scenes DIR] [-t N] [-r W H]
@@ -8,7 +9,8 @@
 //! STUDY is `direct` (hemisphere vs light sampling), `samples` (`-s` vs
 //! `-l`), `global` (max depth, Russian roulette), `adaptive` (adaptive vs
 //! uniform sampling), `course` (the course's area and point light
-//! factors) or `all`. Charts go to `--out` (default `docs/images`), tables
+//! factors), `materials` (MIS against light or BSDF sampling alone, and
+//! the microfacet samplers, on glossy spheres) or `all`. Charts go to `--out` (default `docs/images`), tables
 //! to stdout, progress to stderr. The course's scenes are found by name
 //! under `--scenes DIR`, by default under `$CS184_SCENES` (the course
 //! starter's `dae/` folder; see `pathtracer::scene::course_files`). Images are 160 x 120 (`-r`) with
@@ -29,7 +31,7 @@ use std::process::ExitCode;
 
 use studies::Options;
 
-const USAGE: &str = "usage: convergence direct|samples|global|adaptive|course|all \
+const USAGE: &str = "usage: convergence direct|samples|global|adaptive|course|materials|all \
                      [--out DIR] [--scenes DIR] [-t N] [-r W H]";
 
 fn parse(args: &[String]) -> Result<(String, Options), Box<dyn Error>> {
@@ -72,9 +74,17 @@ fn run(study: &str, options: &Options) -> Result<(), Box<dyn Error>> {
         "global" => studies::global(options),
         "adaptive" => studies::adaptive(options),
         "course" => studies::course(options),
-        "all" => ["direct", "samples", "global", "adaptive", "course"]
-            .iter()
-            .try_for_each(|s| run(s, options)),
+        "materials" => studies::materials(options),
+        "all" => [
+            "direct",
+            "samples",
+            "global",
+            "adaptive",
+            "course",
+            "materials",
+        ]
+        .iter()
+        .try_for_each(|s| run(s, options)),
         other => Err(format!("unknown study {other}\n{USAGE}").into()),
     }
 }

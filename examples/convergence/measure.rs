@@ -37,7 +37,7 @@ use pathtracer::math::luminance;
 use pathtracer::raygen::Camera;
 use pathtracer::render::{pixel_ray, RenderSettings, Rendered};
 use pathtracer::scene::{course_files, Scene};
-use pathtracer::world::World;
+use pathtracer::world::{World, WorldOptions};
 
 /// Seed of every reference render; test renders use small seeds.
 pub const REFERENCE_SEED: u64 = 0x5EED_0000_0000;
@@ -127,14 +127,53 @@ impl Setup {
         adaptive: Option<Adaptive>,
         seed: u64,
     ) -> Rendered {
-        let scene = World::new(&self.scene, &self.accel);
+        self.render_options(
+            tracer,
+            WorldOptions::default(),
+            samples_per_pixel,
+            adaptive,
+            seed,
+        )
+    }
+
+    /// [`Setup::render`] with the BSDF and light options of the flags
+    /// (`--microfacet-sampling`, `--schlick`, ...), without adaptive sampling.
+    pub fn render_with(
+        &self,
+        tracer: &PathTracer,
+        options: WorldOptions,
+        samples_per_pixel: u32,
+        seed: u64,
+    ) -> Rendered {
+        self.render_options(tracer, options, samples_per_pixel, None, seed)
+    }
+
+    fn render_options(
+        &self,
+        tracer: &PathTracer,
+        options: WorldOptions,
+        samples_per_pixel: u32,
+        adaptive: Option<Adaptive>,
+        seed: u64,
+    ) -> Rendered {
+        let scene = World::with_options(&self.scene, &self.accel, options);
         let settings = self.settings(samples_per_pixel, seed);
         render_lighting(&scene, tracer, &self.camera, &settings, adaptive)
     }
 
     /// The study's reference: `samples_per_pixel` samples, its own seed.
     pub fn reference(&self, tracer: &PathTracer, samples_per_pixel: u32) -> Reference {
-        let rendered = self.render(tracer, samples_per_pixel, None, REFERENCE_SEED);
+        self.reference_with(tracer, WorldOptions::default(), samples_per_pixel)
+    }
+
+    /// [`Setup::reference`] with the options of the flags.
+    pub fn reference_with(
+        &self,
+        tracer: &PathTracer,
+        options: WorldOptions,
+        samples_per_pixel: u32,
+    ) -> Reference {
+        let rendered = self.render_with(tracer, options, samples_per_pixel, REFERENCE_SEED);
         let reference = Reference::new(&rendered, self.emitter_free_pixels());
         eprintln!(
             "reference {}: {} spp, {:.1} s, {} of {} pixels see no emitter, mean luminance {:.4}, own relative error {:.3} %",

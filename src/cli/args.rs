@@ -90,10 +90,11 @@ pub struct CourseArgs {
     #[arg(long)]
     pub schlick: bool,
 
-    /// Microfacet BSDFs sample the Beckmann half vector, as the course
-    /// does. Default: sampling of the visible normals (less noise).
-    #[arg(long)]
-    pub half_vector: bool,
+    /// How microfacet BSDFs sample directions: `half-vector` as the
+    /// course does (Beckmann D cos), `cosine` ignoring the lobe (the
+    /// baseline), or the visible normals (the default, least noise).
+    #[arg(long, value_enum, value_name = "STRATEGY", default_value_t = MicrofacetSamplingArg::VisibleNormals)]
+    pub microfacet_sampling: MicrofacetSamplingArg,
 
     /// Lens radius (thin-lens depth of field, part 8); 0 is a pinhole.
     #[arg(short = 'b', value_name = "RADIUS", default_value_t = 0.0,
@@ -141,6 +142,29 @@ fn positive(s: &str) -> Result<f32, String> {
     match s.parse::<f32>() {
         Ok(v) if v.is_finite() && v > 0.0 => Ok(v),
         _ => Err(format!("expected a finite positive number, not {s}")),
+    }
+}
+
+/// `--microfacet-sampling`: the command line's names of
+/// [`MicrofacetSampling`] (kept here so that the library needs no clap).
+#[derive(clap::ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum MicrofacetSamplingArg {
+    /// `wi` cosine-weighted on the hemisphere.
+    Cosine,
+    /// The Beckmann half vector from `D(h) cos(theta_h)` (the course's).
+    HalfVector,
+    /// The normals visible from `wo` (Heitz and d'Eon 2014).
+    #[default]
+    VisibleNormals,
+}
+
+impl From<MicrofacetSamplingArg> for MicrofacetSampling {
+    fn from(arg: MicrofacetSamplingArg) -> Self {
+        match arg {
+            MicrofacetSamplingArg::Cosine => MicrofacetSampling::CosineHemisphere,
+            MicrofacetSamplingArg::HalfVector => MicrofacetSampling::HalfVector,
+            MicrofacetSamplingArg::VisibleNormals => MicrofacetSampling::VisibleNormals,
+        }
     }
 }
 
@@ -263,11 +287,7 @@ impl CourseArgs {
                 } else {
                     FresnelModel::Exact
                 },
-                microfacet: if self.half_vector {
-                    MicrofacetSampling::HalfVector
-                } else {
-                    MicrofacetSampling::VisibleNormals
-                },
+                microfacet: self.microfacet_sampling.into(),
             },
         }
     }
@@ -341,6 +361,24 @@ mod tests {
         );
         assert_eq!(a.adaptive_settings(), Ok(None));
         assert_eq!(a.output_path(), PathBuf::from("cornell-box.png"));
+        assert_eq!(
+            a.world_options().bsdf.microfacet,
+            MicrofacetSampling::VisibleNormals
+        );
+    }
+
+    #[test]
+    fn microfacet_sampling_names_parse() {
+        for (name, sampling) in [
+            ("cosine", MicrofacetSampling::CosineHemisphere),
+            ("half-vector", MicrofacetSampling::HalfVector),
+            ("visible-normals", MicrofacetSampling::VisibleNormals),
+        ] {
+            let a = CourseArgs::try_parse_from(["p", "--microfacet-sampling", name]).unwrap();
+            assert_eq!(a.world_options().bsdf.microfacet, sampling, "{name}");
+        }
+        assert!(CourseArgs::try_parse_from(["p", "--microfacet-sampling", "ggx"]).is_err());
+        assert!(CourseArgs::try_parse_from(["p", "--half-vector"]).is_err());
     }
 
     #[test]

@@ -18,6 +18,10 @@
 //! p(wi) = p(h) / (4 |wo.h|)
 //! ```
 //!
+//! `MicrofacetSampling::CosineHemisphere` draws `wi` directly, cosine-
+//! weighted, `p(wi) = cos(theta_i) / pi` (no half vector, nothing
+//! discarded): the baseline of docs/07-materials.md.
+//!
 //! A direction below the surface (or an `h` facing away from `wo`) is
 //! discarded: `sample` returns `None`, and `p` is a sub-density whose
 //! integral over the hemisphere is the probability of keeping the sample.
@@ -28,6 +32,7 @@ use glam::{Vec2, Vec3};
 
 use super::beckmann::Beckmann;
 use super::{fresnel, BsdfSample, Density, MicrofacetSampling};
+use crate::math::warp::{cosine_hemisphere_pdf, sample_cosine_hemisphere};
 use crate::math::Rgb;
 
 /// A rough metal with Beckmann roughness and complex index `eta + i k`.
@@ -83,10 +88,12 @@ impl Conductor {
 
     /// Density per steradian of the half vector `h` (with `wo.h = cos_h`)
     /// under the chosen strategy.
+    /// Not called for `CosineHemisphere`, which samples no half vector.
     fn pdf_h(&self, wo: Vec3, h: Vec3, cos_h: f32) -> f32 {
         match self.sampling {
             MicrofacetSampling::HalfVector => self.distribution.pdf_h(h),
             MicrofacetSampling::VisibleNormals => self.distribution.visible_density(wo, h, cos_h),
+            MicrofacetSampling::CosineHemisphere => 0.0,
         }
     }
 
@@ -94,6 +101,9 @@ impl Conductor {
     pub fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
         if wo.z <= 0.0 || wi.z <= 0.0 {
             return 0.0;
+        }
+        if self.sampling == MicrofacetSampling::CosineHemisphere {
+            return cosine_hemisphere_pdf(wi);
         }
         let Some((h, cos_oh)) = half_vector(wo, wi) else {
             return 0.0;
@@ -118,6 +128,9 @@ impl Conductor {
         let h = match self.sampling {
             MicrofacetSampling::HalfVector => self.distribution.sample_h(u),
             MicrofacetSampling::VisibleNormals => self.distribution.sample_visible(wo, u),
+            MicrofacetSampling::CosineHemisphere => {
+                return self.sample_cosine(wo, u);
+            }
         };
         let cos_oh = wo.dot(h);
         if cos_oh <= 0.0 {
@@ -131,6 +144,19 @@ impl Conductor {
         // exactly the ratio pdf() and f() give for this pair.
         let pdf = self.pdf(wo, wi);
         (pdf > 0.0).then(|| BsdfSample {
+            f: self.f(wo, wi),
+            wi,
+            density: Density::SolidAngle(pdf),
+            transmission: false,
+            eta: 1.0,
+        })
+    }
+
+    /// `wi` cosine-weighted on the hemisphere, whatever the lobe.
+    fn sample_cosine(&self, wo: Vec3, u: Vec2) -> Option<BsdfSample> {
+        let wi = sample_cosine_hemisphere(u);
+        let pdf = cosine_hemisphere_pdf(wi);
+        (wi.z > 0.0 && pdf > 0.0).then(|| BsdfSample {
             f: self.f(wo, wi),
             wi,
             density: Density::SolidAngle(pdf),

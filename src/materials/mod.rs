@@ -22,7 +22,7 @@
 //! | mirror | [`mirror`] | delta reflection |
 //! | refraction | [`refraction`] | delta transmission |
 //! | glass | [`glass`] | delta reflection and transmission, Fresnel ([`fresnel`]) |
-//! | microfacet | [`microfacet`] | rough conductor: Beckmann ([`beckmann`]), height-correlated Smith `G`, conductor Fresnel; sampled by half vector or visible normals ([`MicrofacetSampling`]) |
+//! | microfacet | [`microfacet`] | rough conductor: Beckmann ([`beckmann`]), height-correlated Smith `G`, conductor Fresnel; sampled by visible normals, half vector or the cosine-weighted hemisphere ([`MicrofacetSampling`]) |
 
 pub mod beckmann;
 pub mod diffuse;
@@ -103,9 +103,14 @@ pub enum FresnelModel {
     Schlick,
 }
 
-/// How a microfacet BSDF draws the microfacet normal it reflects about.
+/// How a microfacet BSDF draws `wi`: by a microfacet normal it reflects
+/// about, or (for comparison) without looking at the BSDF at all.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum MicrofacetSampling {
+    /// `wi` cosine-weighted on the hemisphere, `p(wi) = cos(theta_i) / pi`,
+    /// ignoring the lobe: the diffuse sampler, the baseline the other two
+    /// improve on (noisy for a narrow lobe).
+    CosineHemisphere,
     /// From `D(h) cos(theta_h)` (Walter et al. 2007), as the course does.
     HalfVector,
     /// From the normals visible from `wo` (Heitz and d'Eon 2014): lower
