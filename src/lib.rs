@@ -11,6 +11,8 @@
 //! | 3 direct lighting | [`direct`] (hemisphere, light sampling) | `part3-direct` | `docs/04-direct.md` |
 //! | 4 global illumination | [`global`] (path tracing, Russian roulette) | `part4-global` | `docs/05-global.md` |
 //! | 5 adaptive sampling | [`adaptive`] | `part5-adaptive` | `docs/06-adaptive.md` |
+//! | 3-2 mirror, glass, microfacet | [`materials`] | `part6-materials` | `docs/07-materials.md` |
+//! | 3-2 environment light | [`environment`] | `part7-environment` | `docs/08-environment.md` |
 //!
 //! Support modules: [`math`] (colours, frames, warps, floating-point
 //! helpers), [`materials`] (BSDFs), [`scene`] (scene model, the COLLADA
@@ -23,6 +25,7 @@ pub mod adaptive;
 pub mod bvh;
 pub mod cli;
 pub mod direct;
+pub mod environment;
 pub mod global;
 pub mod intersect;
 pub mod lights;
