@@ -312,7 +312,7 @@ fn distribution_family(
     };
     let to_square = |w: Vec3| {
         let phi = (w.y as f64).atan2(w.x as f64).rem_euclid(2.0 * PI);
-        Vec2::new((phi / (2.0 * PI)) as f32, (0.5 * (1.0 - w.z)) as f32)
+        Vec2::new((phi / (2.0 * PI)) as f32, 0.5 * (1.0 - w.z))
     };
     Family {
         name: name.into(),
