@@ -12,6 +12,7 @@
 //! | 4 global illumination | [`global`] (path tracing, Russian roulette) | `part4-global` | `docs/05-global.md` |
 //! | 5 adaptive sampling | [`adaptive`] | `part5-adaptive` | `docs/06-adaptive.md` |
 //! | 3-2 mirror, glass, microfacet | [`materials`] (BSDFs, Fresnel, Beckmann) | `part6-materials` | `docs/07-materials.md` |
+//! | 3-2 environment light | [`environment`] (lat-long map, its sampling) | `part7-environment` | `docs/08-environment.md` |
 //! | 3-2 depth of field | [`depth_of_field`] (thin lens) | `part8-dof` | `docs/09-depth-of-field.md` |
 //!
 //! Support modules: [`math`] (colours, frames, warps, MIS weights,
@@ -31,6 +32,7 @@ pub mod bvh;
 pub mod cli;
 pub mod depth_of_field;
 pub mod direct;
+pub mod environment;
 pub mod global;
 pub mod intersect;
 pub mod lights;

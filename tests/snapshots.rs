@@ -157,6 +157,14 @@ fn part8_depth_of_field() {
 }
 
 #[test]
+fn part7_environment() {
+    assert_close_to_snapshot(
+        "part7-environment",
+        &render_with(drivers::part7, &["-s", "8", "-m", "4"]),
+    );
+}
+
+#[test]
 fn renders_do_not_depend_on_the_thread_count() {
     let one = render_with(drivers::pathtracer, &["-s", "4", "-t", "1"]);
     let two = render_with(drivers::pathtracer, &["-s", "4", "-t", "2"]);

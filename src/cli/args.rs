@@ -116,6 +116,21 @@ pub struct CourseArgs {
     #[arg(long)]
     pub no_plan: bool,
 
+    /// Environment map lighting the scene from infinitely far away: a
+    /// latitude-longitude OpenEXR (.exr) or Radiance (.hdr) image, 2:1.
+    #[arg(short = 'e', value_name = "FILE")]
+    pub environment: Option<PathBuf>,
+
+    /// Sample the environment map uniformly on the sphere instead of by
+    /// its luminance (to compare the two).
+    #[arg(long)]
+    pub env_uniform: bool,
+
+    /// Light the scene by the built-in sky when no -e is given (set by the
+    /// binary, not a flag).
+    #[arg(skip)]
+    pub builtin_sky: bool,
+
     /// Print what the scene holds and the render plan, one item a line, and exit.
     #[arg(long)]
     pub info: bool,
@@ -176,6 +191,9 @@ pub enum Builtin {
     CornellBox,
     /// [`builtin::materials_box`]: mirror, glass and copper (part 6).
     MaterialsBox,
+    /// [`builtin::environment_spheres`]: two spheres on a floor, no
+    /// light of their own (part 7).
+    EnvironmentSpheres,
 }
 
 impl Builtin {
@@ -183,6 +201,7 @@ impl Builtin {
         match self {
             Builtin::CornellBox => builtin::cornell_box(),
             Builtin::MaterialsBox => builtin::materials_box(),
+            Builtin::EnvironmentSpheres => builtin::environment_spheres(),
         }
     }
 
@@ -191,6 +210,7 @@ impl Builtin {
         match self {
             Builtin::CornellBox => "cornell-box",
             Builtin::MaterialsBox => "materials-box",
+            Builtin::EnvironmentSpheres => "environment-spheres",
         }
     }
 }

@@ -18,6 +18,7 @@
 //! | point, spot | [`point`] | delta (the spot lights nothing, as in the course) |
 //! | directional, ambient sky | [`distant`] | delta; uniform hemisphere around +Y |
 //! | emissive triangles | [`triangles`] | power-proportional pick, uniform area |
+//! | environment map (`-e`) | [`crate::environment`] | luminance x `sin(theta)` of the map, or uniform sphere |
 //!
 //! [`LightSet`] builds them once per render from the scene, and tells for
 //! each primitive how its emission is counted ([`EmitterRole`]).
@@ -43,6 +44,7 @@ pub use triangles::EmissiveTriangles;
 
 use glam::{Vec2, Vec3};
 
+use crate::environment::EnvironmentLight;
 use crate::math::Rgb;
 use crate::scene::Light as SceneLight;
 
@@ -63,6 +65,7 @@ pub enum Light {
     Directional(DirectionalLight),
     Sky(AmbientSky),
     Triangles(EmissiveTriangles),
+    Environment(EnvironmentLight),
 }
 
 impl Light {
@@ -124,6 +127,7 @@ impl Light {
             Light::Directional(l) => Some(l.sample_li()),
             Light::Sky(l) => l.sample_li(u),
             Light::Triangles(l) => l.sample_li(p, uc, u),
+            Light::Environment(l) => l.sample_li(u),
         }
     }
 
@@ -135,6 +139,7 @@ impl Light {
         match self {
             Light::Rect(l) => l.pdf_li(p, wi),
             Light::Sky(l) => l.pdf_li(wi),
+            Light::Environment(l) => l.pdf_li(wi),
             Light::Triangles(l) => hit.map_or(0.0, |h| l.pdf_li(p, h.member, h.point)),
             Light::Point(_) | Light::Spot(_) | Light::Directional(_) => 0.0,
         }
@@ -145,6 +150,7 @@ impl Light {
     pub fn escaped_radiance(&self, w: Vec3) -> Rgb {
         match self {
             Light::Sky(l) => l.escaped_radiance(w),
+            Light::Environment(l) => l.escaped_radiance(w),
             _ => Rgb::ZERO,
         }
     }
@@ -159,6 +165,7 @@ impl Light {
             Light::Directional(l) => l.power(scene_radius),
             Light::Sky(l) => l.power(scene_radius),
             Light::Triangles(l) => l.power(),
+            Light::Environment(l) => l.power(scene_radius),
         }
     }
 
@@ -172,7 +179,10 @@ impl Light {
 
     /// Whether the light is infinitely far away (seen by escaping rays).
     pub fn is_infinite(&self) -> bool {
-        matches!(self, Light::Directional(_) | Light::Sky(_))
+        matches!(
+            self,
+            Light::Directional(_) | Light::Sky(_) | Light::Environment(_)
+        )
     }
 
     /// A short lower-case name of the light's kind.
@@ -184,6 +194,7 @@ impl Light {
             Light::Directional(_) => "directional",
             Light::Sky(_) => "ambient",
             Light::Triangles(_) => "emissive triangles",
+            Light::Environment(_) => "environment",
         }
     }
 }

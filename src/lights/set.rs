@@ -25,6 +25,7 @@
 use glam::Vec3;
 
 use super::{EmissiveTriangles, Light, LightConvention, RectLight};
+use crate::environment::EnvironmentLight;
 use crate::math::Rgb;
 use crate::scene::{Light as SceneLight, Material, Scene};
 
@@ -123,6 +124,14 @@ impl LightSet {
             scene_radius: scene_radius(scene),
             lights,
         }
+    }
+
+    /// The same set with the environment light `environment` added, at
+    /// infinity: escaping rays see it, direct lighting samples it.
+    pub fn with_environment(mut self, environment: EnvironmentLight) -> Self {
+        self.infinite.push(self.lights.len());
+        self.lights.push(Light::Environment(environment));
+        self
     }
 
     /// How the emission of primitive `primitive` is counted.

@@ -1,8 +1,10 @@
-//! Shared mathematics: colours, orthonormal frames, warps and floating-point helpers.
+//! Shared mathematics: colours, orthonormal frames, warps, piecewise-constant
+//! distributions and floating-point helpers.
 //!
 //! Geometry is `f32` ([`glam::Vec3`]); colours are linear RGB in a [`Rgb`].
 
 pub mod color;
+pub mod distribution;
 pub mod float;
 pub mod frame;
 pub mod mis;

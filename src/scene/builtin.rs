@@ -1,5 +1,6 @@
-//! Built-in scenes made in code (no course data): the default Cornell box
-//! and the bumpy sphere of the ray-throughput benchmark.
+//! Built-in scenes made in code (no course data): the default Cornell box,
+//! the materials box of part 6, two spheres on a floor for the environment
+//! light of part 7, and the bumpy sphere of the ray-throughput benchmark.
 
 use std::f32::consts::PI;
 
@@ -70,6 +71,59 @@ pub fn materials_box() -> Scene {
             (Vec3::new(0.15, 0.22, -0.55), 0.22, copper),
         ],
     )
+}
+
+/// The name under which [`environment_spheres`] appears in messages.
+pub const ENVIRONMENT_SPHERES: &str = "built-in: environment-spheres";
+
+/// Part 7's scene, lit only by an environment map: a diffuse sphere
+/// (albedo 0.75, left) and a rough copper sphere (Beckmann roughness 0.2,
+/// right; copper as in [`materials_box`]), both of radius 0.5, resting on
+/// a grey floor `[-2, 2] x {0} x [-2, 2]` (albedo 0.5). No light of its
+/// own; the camera looks from +Z, a little from above.
+pub fn environment_spheres() -> Scene {
+    let mut builder = MeshBuilder::default();
+    let floor = builder.material(Material::Diffuse {
+        albedo: Vec3::splat(0.5),
+    });
+    let diffuse = builder.material(Material::Diffuse {
+        albedo: Vec3::splat(0.75),
+    });
+    let copper = builder.material(Material::Microfacet {
+        alpha: 0.2,
+        eta: Vec3::new(0.200, 0.924, 1.102),
+        k: Vec3::new(3.913, 2.453, 2.142),
+    });
+    builder.quad(
+        floor,
+        [
+            Vec3::new(-2.0, 0.0, 2.0),
+            Vec3::new(2.0, 0.0, 2.0),
+            Vec3::new(2.0, 0.0, -2.0),
+            Vec3::new(-2.0, 0.0, -2.0),
+        ],
+    );
+    let mut scene = builder.finish(ENVIRONMENT_SPHERES);
+    scene.spheres = vec![
+        Sphere {
+            center: Vec3::new(-0.6, 0.5, 0.0),
+            radius: 0.5,
+            material: diffuse,
+        },
+        Sphere {
+            center: Vec3::new(0.6, 0.5, -0.2),
+            radius: 0.5,
+            material: copper,
+        },
+    ];
+    scene.camera = CameraInfo {
+        dir_to_camera: Vec3::new(0.0, 0.15, 1.0).normalize(),
+        hfov_deg: 49.13434,
+        vfov_deg: 37.8493,
+        znear: 0.1,
+        zfar: 100.0,
+    };
+    scene
 }
 
 /// The box, its light and its camera around the given spheres

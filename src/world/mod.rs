@@ -8,6 +8,7 @@ pub use shading_point::ShadingPoint;
 
 use glam::Vec3;
 
+use crate::environment::EnvironmentLight;
 use crate::intersect::{Intersector, Ray};
 use crate::lights::{LightConvention, LightSet};
 use crate::materials::BsdfOptions;
@@ -44,6 +45,14 @@ impl<'a, I: Intersector> World<'a, I> {
             lights: LightSet::new(scene, options.light_convention),
             bsdf_options: options.bsdf,
         }
+    }
+
+    /// The same world lit also by `environment`, if any (`-e`).
+    pub fn with_environment(mut self, environment: Option<EnvironmentLight>) -> Self {
+        if let Some(environment) = environment {
+            self.lights = std::mem::take(&mut self.lights).with_environment(environment);
+        }
+        self
     }
 
     /// The first surface along `ray`, prepared for shading towards the ray's origin.

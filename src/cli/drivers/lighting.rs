@@ -1,5 +1,6 @@
-//! Parts 3 to 5: direct lighting, global illumination and adaptive
-//! sampling, and the full `pathtracer`.
+//! Parts 3 to 7: direct lighting, global illumination, adaptive
+//! sampling, materials and the environment light, and the full
+//! `pathtracer`. Every part takes `-e FILE` (an environment map).
 
 use std::time::Instant;
 
@@ -9,6 +10,9 @@ use crate::bvh::BvhAccel;
 use crate::cli::args::Builtin;
 use crate::cli::CourseArgs;
 use crate::direct::{DirectHemisphere, DirectLights};
+use crate::environment::{
+    builtin_sky, EnvironmentError, EnvironmentLight, EnvironmentMap, EnvironmentSampling,
+};
 use crate::global::{DirectStrategy, PathTracer};
 use crate::intersect::Intersector;
 use crate::lights::LightSet;
@@ -61,16 +65,57 @@ struct Part {
     rate_image: bool,
 }
 
+/// The environment light the flags ask for: the map of `-e` (read and
+/// checked here, errors naming the file), else the built-in sky when the
+/// binary asks for it, else none; sampled uniformly with `--env-uniform`.
+pub fn environment_light(
+    args: &CourseArgs,
+) -> std::result::Result<Option<EnvironmentLight>, EnvironmentError> {
+    let map = match &args.environment {
+        Some(path) => EnvironmentMap::load(path)?,
+        None if args.builtin_sky => builtin_sky()?,
+        None => return Ok(None),
+    };
+    let sampling = if args.env_uniform {
+        EnvironmentSampling::Uniform
+    } else {
+        EnvironmentSampling::Importance
+    };
+    Ok(Some(EnvironmentLight::new(map, sampling)))
+}
+
 fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
     let Prepared {
         scene,
         primitives,
         camera,
     } = prepare(args)?;
+    let environment = environment_light(args)?;
+    if let Some(env) = &environment {
+        let map = env.map();
+        let line = format!(
+            "environment: {} ({} x {}), sampled {}",
+            map.source(),
+            map.width(),
+            map.height(),
+            match env.sampling {
+                EnvironmentSampling::Importance => "by importance",
+                EnvironmentSampling::Uniform => "uniformly",
+            }
+        );
+        if args.info {
+            println!("{line}");
+        } else {
+            eprintln!("{line}");
+        }
+    }
     let part = part(&scene)?;
     if args.info {
         print!("{}", describe(&scene, &camera));
-        let lights = LightSet::new(&scene, args.world_options().light_convention);
+        let mut lights = LightSet::new(&scene, args.world_options().light_convention);
+        if let Some(env) = environment {
+            lights = lights.with_environment(env);
+        }
         let plan = Plan::new(&scene, &lights, &part.tracer, &camera.lens);
         plan.lines.iter().for_each(|line| println!("{line}"));
         plan.warnings
@@ -85,7 +130,8 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
         scene.source,
         start.elapsed().as_secs_f64()
     );
-    let world = World::with_options(&scene, &accel, args.world_options());
+    let world =
+        World::with_options(&scene, &accel, args.world_options()).with_environment(environment);
     let plan = Plan::new(&scene, &world.lights, &part.tracer, &camera.lens);
     for warning in &plan.warnings {
         eprintln!("warning: {}: {warning}", scene.source);
@@ -172,6 +218,22 @@ pub fn part5(args: &CourseArgs) -> Result<()> {
 pub fn part6(args: &CourseArgs) -> Result<()> {
     let mut args = args.clone();
     args.builtin = Builtin::MaterialsBox;
+    run(&args, |scene| {
+        Ok(Part {
+            tracer: path_tracer(&args, scene),
+            adaptive: None,
+            rate_image: false,
+        })
+    })
+}
+
+/// `part7-environment`: part 4's path tracer lit by an environment map,
+/// `-e FILE` or else the built-in sky ([`builtin_sky`]); with no scene
+/// file, two spheres on a floor ([`crate::scene::builtin::environment_spheres`]).
+pub fn part7(args: &CourseArgs) -> Result<()> {
+    let mut args = args.clone();
+    args.builtin = Builtin::EnvironmentSpheres;
+    args.builtin_sky = true;
     run(&args, |scene| {
         Ok(Part {
             tracer: path_tracer(&args, scene),

@@ -7,7 +7,9 @@ pub mod lighting;
 pub use geometry::{
     bvh_benchmark, bvh_scaling, measure_speedup, part1, part2, render_normals, Speedup,
 };
-pub use lighting::{part3, part4, part5, part6, part8, pathtracer, render_lighting};
+pub use lighting::{
+    environment_light, part3, part4, part5, part6, part7, part8, pathtracer, render_lighting,
+};
 
 use std::error::Error;
 

@@ -1,0 +1,163 @@
+//! The environment light: radiance `L(w)` from every direction, read from a
+//! latitude-longitude map, infinitely far away (pbrt-v4, section 12.5.2,
+//! `ImageInfiniteLight`; the course's handout, 3-2 part 3).
+//!
+//! Two ways to sample a direction towards it:
+//!
+//! - **uniform** on the sphere (`--env-uniform`): `p(w) = 1 / (4 pi)`;
+//! - **importance** by a piecewise-constant 2D distribution over the map's
+//!   cells ([`Distribution2D`]: rows by their marginal, then the column in
+//!   the row), proportional to the cell's luminance times `sin(theta)` of
+//!   its centre. Sampling a point `(u, v)` of the unit square with density
+//!   `p(u, v)` and mapping it to `w` with `theta = pi v`, `phi = 2 pi u`,
+//!   where `d omega = sin(theta) d theta d phi = 2 pi^2 sin(theta) du dv`,
+//!   gives the density per steradian
+//!
+//! ```text
+//! p(w) = p(u, v) / (2 pi^2 sin(theta))      (= p_pixel w h / (2 pi^2 sin theta) in the course)
+//! ```
+//!
+//! The `sin(theta)` in the distribution cancels this Jacobian up to its
+//! variation across a row, so `L / p` stays bounded near the poles; at a
+//! pole itself (`sin(theta) = 0`, a set of measure zero) no direction is
+//! sampled and the density is 0.
+//!
+//! The course weights each cell by its texel; here a cell's weight is the
+//! luminance of the *average of the bilinear lookup over the cell*
+//! ([`EnvironmentMap::cell_average`]), since the light's radiance is the
+//! bilinear lookup: a dark texel next to a bright one still shows some of
+//! its light, and a density of 0 there would make the estimator miss it
+//! (bias). Every cell where the lookup is somewhere positive has a positive
+//! density.
+//!
+//! Power through a scene of radius `R`: `Phi = pi R^2 integral L dw` (as
+//! pbrt-v4 counts lights at infinity; the ambient sky's `2 pi^2 R^2 L` is
+//! the special case of a bright upper hemisphere).
+
+use std::f32::consts::PI;
+use std::sync::Arc;
+
+use glam::{Vec2, Vec3};
+
+use super::map::{direction_to_uv, uv_to_direction, EnvironmentMap};
+use crate::lights::{LightPdf, LightSample};
+use crate::math::distribution::Distribution2D;
+use crate::math::warp::{sample_uniform_sphere, uniform_sphere_pdf};
+use crate::math::{luminance, Rgb};
+
+/// How [`EnvironmentLight::sample_li`] picks directions.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum EnvironmentSampling {
+    /// By the map's luminance times `sin(theta)` (the default).
+    #[default]
+    Importance,
+    /// Uniformly on the sphere (`--env-uniform`), to compare with.
+    Uniform,
+}
+
+/// The map and the tables made from it, shared between clones.
+#[derive(Debug)]
+struct Tables {
+    map: EnvironmentMap,
+    distribution: Distribution2D,
+    /// `integral L dw` over the sphere, per channel.
+    radiant_integral: Rgb,
+}
+
+/// A light at infinity whose radiance comes from an environment map.
+#[derive(Clone, Debug)]
+pub struct EnvironmentLight {
+    tables: Arc<Tables>,
+    pub sampling: EnvironmentSampling,
+}
+
+impl EnvironmentLight {
+    /// The light of `map`, sampled by `sampling`; builds the 2D distribution.
+    pub fn new(map: EnvironmentMap, sampling: EnvironmentSampling) -> Self {
+        let (w, h) = (map.width(), map.height());
+        let mut weights = Vec::with_capacity(w * h);
+        let mut radiant_integral = Rgb::ZERO;
+        for j in 0..h {
+            let sin_theta = (PI * (j as f32 + 0.5) / h as f32).sin();
+            for i in 0..w {
+                weights.push(luminance(map.cell_average(i, j)) * sin_theta);
+                radiant_integral += map.texel(i as i64, j as i64) * sin_theta;
+            }
+        }
+        // Each cell spans (2 pi / w) (pi / h) in (phi, theta).
+        radiant_integral *= 2.0 * PI * PI / (w * h) as f32;
+        EnvironmentLight {
+            tables: Arc::new(Tables {
+                distribution: Distribution2D::new(&weights, w, h),
+                map,
+                radiant_integral,
+            }),
+            sampling,
+        }
+    }
+
+    /// The map this light shows.
+    pub fn map(&self) -> &EnvironmentMap {
+        &self.tables.map
+    }
+
+    /// The same map sampled another way (the tables are shared).
+    pub fn with_sampling(&self, sampling: EnvironmentSampling) -> Self {
+        EnvironmentLight {
+            tables: Arc::clone(&self.tables),
+            sampling,
+        }
+    }
+
+    /// A direction towards the environment for `u` in `[0, 1)^2`, with the
+    /// radiance along it and its density per steradian; `None` at a pole.
+    #[doc(alias = "sample_L")]
+    pub fn sample_li(&self, u: Vec2) -> Option<LightSample> {
+        let (wi, pdf, radiance) = match self.sampling {
+            EnvironmentSampling::Uniform => {
+                let wi = sample_uniform_sphere(u);
+                (wi, uniform_sphere_pdf(), self.escaped_radiance(wi))
+            }
+            EnvironmentSampling::Importance => {
+                let s = self.tables.distribution.sample(u);
+                let sin_theta = (PI * s.x.y).sin();
+                let pdf = s.pdf / (2.0 * PI * PI * sin_theta);
+                (uv_to_direction(s.x), pdf, self.tables.map.lookup(s.x))
+            }
+        };
+        (pdf > 0.0 && pdf.is_finite()).then_some(LightSample {
+            radiance,
+            wi,
+            distance: f32::INFINITY,
+            pdf: LightPdf::SolidAngle(pdf),
+        })
+    }
+
+    /// Density per steradian with which [`Self::sample_li`] picks the
+    /// direction `wi`: `p(u, v) / (2 pi^2 sin(theta))`, 0 at the poles.
+    pub fn pdf_li(&self, wi: Vec3) -> f32 {
+        match self.sampling {
+            EnvironmentSampling::Uniform => uniform_sphere_pdf(),
+            EnvironmentSampling::Importance => {
+                let w = wi.normalize_or_zero();
+                let sin_theta = w.x.hypot(w.z);
+                if sin_theta <= 0.0 {
+                    return 0.0;
+                }
+                let p = self.tables.distribution.pdf(direction_to_uv(w));
+                p / (2.0 * PI * PI * sin_theta)
+            }
+        }
+    }
+
+    /// Radiance seen along a ray that escapes in the unit direction `w`.
+    #[doc(alias = "sample_dir")]
+    pub fn escaped_radiance(&self, w: Vec3) -> Rgb {
+        self.tables.map.radiance(w)
+    }
+
+    /// Power through a scene of radius `scene_radius`: `pi R^2 integral L dw`.
+    pub fn power(&self, scene_radius: f32) -> Rgb {
+        PI * scene_radius * scene_radius * self.tables.radiant_integral
+    }
+}

@@ -1,0 +1,284 @@
+//! The latitude-longitude environment image: loading (OpenEXR, Radiance
+//! `.hdr`), checks, the course's direction <-> `(u, v)` mapping and
+//! bilinear lookup.
+//!
+//! Mapping (the course's handout, 3-2 part 3, and its starter's
+//! `EnvironmentLight::dir_to_theta_phi` / `theta_phi_to_xy`):
+//!
+//! ```text
+//! theta = acos(d.y),  phi = atan2(-d.z, d.x) + pi,
+//! u = phi / (2 pi),   v = theta / pi            (row 0 = up, +Y)
+//! d = (-sin(theta) cos(phi), cos(theta), sin(theta) sin(phi))
+//! ```
+//!
+//! so `u = 1/2` looks along +X and `u = 1/4` along +Z. Texel `(i, j)` is
+//! centred on `((i + 1/2) / w, (j + 1/2) / h)`; the lookup interpolates
+//! bilinearly between the four nearest centres, wrapping around in `u`
+//! and clamping in `v`.
+
+use std::f32::consts::PI;
+use std::fmt;
+use std::path::Path;
+
+use glam::{Vec2, Vec3};
+use image::{ImageFormat, ImageReader};
+
+use crate::math::Rgb;
+
+/// An environment map that could not be used: the file (or the name of a
+/// map made in code) and what was wrong.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct EnvironmentError {
+    pub file: String,
+    pub problem: String,
+}
+
+impl fmt::Display for EnvironmentError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: environment map: {}", self.file, self.problem)
+    }
+}
+
+impl std::error::Error for EnvironmentError {}
+
+/// A latitude-longitude image of radiance, `width = 2 height`.
+#[derive(Clone, PartialEq)]
+pub struct EnvironmentMap {
+    width: usize,
+    height: usize,
+    /// Linear RGB radiance, rows from the top (`v = 0`, +Y) down.
+    texels: Vec<Rgb>,
+    /// Where the map came from, for messages.
+    source: String,
+}
+
+impl fmt::Debug for EnvironmentMap {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "EnvironmentMap({}, {} x {})",
+            self.source, self.width, self.height
+        )
+    }
+}
+
+/// `(u, v)` in `[0, 1)^2` of the unit direction `d` (need not be exactly unit).
+pub fn direction_to_uv(d: Vec3) -> Vec2 {
+    // theta from atan2 keeps its accuracy near the poles, where acos loses it.
+    let theta = d.x.hypot(d.z).atan2(d.y);
+    let phi = (-d.z).atan2(d.x) + PI;
+    let u = (phi / (2.0 * PI)).clamp(0.0, 1.0);
+    Vec2::new(if u >= 1.0 { 0.0 } else { u }, (theta / PI).clamp(0.0, 1.0))
+}
+
+/// The unit direction of `(u, v)`: the inverse of [`direction_to_uv`].
+pub fn uv_to_direction(uv: Vec2) -> Vec3 {
+    let (sin_theta, cos_theta) = (PI * uv.y).sin_cos();
+    let (sin_phi, cos_phi) = (2.0 * PI * uv.x).sin_cos();
+    Vec3::new(-sin_theta * cos_phi, cos_theta, sin_theta * sin_phi)
+}
+
+impl EnvironmentMap {
+    /// A map of `width x height` texels (rows from the top), checked: 2:1,
+    /// at least 2 x 1, every texel finite and non-negative. `source` names
+    /// the map in errors.
+    pub fn new(
+        source: &str,
+        width: usize,
+        height: usize,
+        texels: Vec<Rgb>,
+    ) -> Result<Self, EnvironmentError> {
+        let error = |problem: String| EnvironmentError {
+            file: source.to_string(),
+            problem,
+        };
+        if height == 0 || width != 2 * height {
+            return Err(error(format!(
+                "a latitude-longitude map is twice as wide as high, this one is {width} x {height}"
+            )));
+        }
+        if texels.len() != width * height {
+            return Err(error(format!(
+                "{} texels for {width} x {height}",
+                texels.len()
+            )));
+        }
+        if let Some(k) = texels
+            .iter()
+            .position(|t| !t.is_finite() || t.min_element() < 0.0)
+        {
+            return Err(error(format!(
+                "texel ({}, {}) is {} (radiance must be finite and non-negative)",
+                k % width,
+                k / width,
+                texels[k]
+            )));
+        }
+        Ok(EnvironmentMap {
+            width,
+            height,
+            texels,
+            source: source.to_string(),
+        })
+    }
+
+    /// The map whose texel `(i, j)` holds `radiance` of the direction
+    /// through its centre.
+    pub fn from_fn(
+        source: &str,
+        width: usize,
+        height: usize,
+        radiance: impl Fn(Vec3) -> Rgb,
+    ) -> Result<Self, EnvironmentError> {
+        let texels = (0..width * height)
+            .map(|k| {
+                let uv = Vec2::new(
+                    ((k % width) as f32 + 0.5) / width as f32,
+                    ((k / width) as f32 + 0.5) / height as f32,
+                );
+                radiance(uv_to_direction(uv))
+            })
+            .collect();
+        Self::new(source, width, height, texels)
+    }
+
+    /// Reads an OpenEXR (half or full float, RGB or RGBA; alpha is
+    /// ignored) or Radiance `.hdr` latitude-longitude map.
+    pub fn load(path: &Path) -> Result<Self, EnvironmentError> {
+        let file = path.display().to_string();
+        let error = |problem: String| EnvironmentError {
+            file: file.clone(),
+            problem,
+        };
+        let reader = ImageReader::open(path)
+            .map_err(|e| error(format!("cannot open: {e}")))?
+            .with_guessed_format()
+            .map_err(|e| error(format!("cannot read: {e}")))?;
+        match reader.format() {
+            Some(ImageFormat::OpenExr | ImageFormat::Hdr) => {}
+            _ => {
+                return Err(error(
+                    "not an OpenEXR (.exr) or Radiance (.hdr) image".into(),
+                ))
+            }
+        }
+        let image = reader
+            .decode()
+            .map_err(|e| error(format!("cannot decode: {e}")))?
+            .into_rgb32f();
+        let (width, height) = (image.width() as usize, image.height() as usize);
+        let texels = image.pixels().map(|p| Rgb::from_array(p.0)).collect();
+        Self::new(&file, width, height, texels)
+    }
+
+    pub fn width(&self) -> usize {
+        self.width
+    }
+
+    pub fn height(&self) -> usize {
+        self.height
+    }
+
+    /// Where the map came from.
+    pub fn source(&self) -> &str {
+        &self.source
+    }
+
+    /// Texel `(i, j)`, column `i` wrapped around, row `j` clamped.
+    pub fn texel(&self, i: i64, j: i64) -> Rgb {
+        let i = i.rem_euclid(self.width as i64) as usize;
+        let j = j.clamp(0, self.height as i64 - 1) as usize;
+        self.texels[j * self.width + i]
+    }
+
+    /// Radiance at `(u, v)`, bilinear between texel centres.
+    #[doc(alias = "bilerp")]
+    pub fn lookup(&self, uv: Vec2) -> Rgb {
+        let x = uv.x * self.width as f32 - 0.5;
+        let y = uv.y * self.height as f32 - 0.5;
+        let (x0, y0) = (x.floor(), y.floor());
+        let (fx, fy) = (x - x0, y - y0);
+        let (i, j) = (x0 as i64, y0 as i64);
+        let top = self.texel(i, j).lerp(self.texel(i + 1, j), fx);
+        let bottom = self.texel(i, j + 1).lerp(self.texel(i + 1, j + 1), fx);
+        top.lerp(bottom, fy)
+    }
+
+    /// Radiance arriving from the unit direction `d`.
+    pub fn radiance(&self, d: Vec3) -> Rgb {
+        self.lookup(direction_to_uv(d))
+    }
+
+    /// Average over texel `(i, j)`'s cell of the bilinear interpolant:
+    /// the kernel `[1 6 1] / 8` in each direction (on each half of the cell
+    /// the interpolant runs linearly from a neighbour's mean with the texel
+    /// to the texel). Positive wherever [`Self::lookup`] is somewhere
+    /// positive in the cell.
+    pub fn cell_average(&self, i: usize, j: usize) -> Rgb {
+        let (i, j) = (i as i64, j as i64);
+        let weights = [(-1, 1.0), (0, 6.0), (1, 1.0)];
+        let mut sum = Rgb::ZERO;
+        for (dj, wj) in weights {
+            for (di, wi) in weights {
+                sum += wi * wj * self.texel(i + di, j + dj);
+            }
+        }
+        sum / 64.0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_course_mapping_and_its_inverse() {
+        let close = |a: Vec3, b: Vec3| (a - b).length() < 1e-5;
+        assert!(close(uv_to_direction(Vec2::new(0.5, 0.5)), Vec3::X));
+        assert!(close(uv_to_direction(Vec2::new(0.25, 0.5)), Vec3::Z));
+        assert!(close(uv_to_direction(Vec2::new(0.75, 0.5)), -Vec3::Z));
+        assert!(close(uv_to_direction(Vec2::new(0.3, 0.0)), Vec3::Y));
+        for k in 0..200 {
+            let uv = Vec2::new(
+                (k % 20) as f32 / 20.0 + 0.013,
+                (k / 20) as f32 / 10.0 + 0.021,
+            );
+            let back = direction_to_uv(uv_to_direction(uv));
+            assert!((back - uv).length() < 1e-5, "{uv} -> {back}");
+        }
+    }
+
+    #[test]
+    fn lookup_is_bilinear_wraps_in_u_and_clamps_in_v() {
+        let texels = vec![
+            Rgb::splat(0.0),
+            Rgb::splat(1.0),
+            Rgb::splat(2.0),
+            Rgb::splat(3.0),
+            Rgb::splat(4.0),
+            Rgb::splat(5.0),
+            Rgb::splat(6.0),
+            Rgb::splat(7.0),
+        ];
+        let map = EnvironmentMap::new("test", 4, 2, texels).unwrap();
+        assert_eq!(map.lookup(Vec2::new(0.125, 0.25)), Rgb::splat(0.0));
+        assert_eq!(map.lookup(Vec2::new(0.25, 0.25)), Rgb::splat(0.5));
+        assert_eq!(map.lookup(Vec2::new(0.25, 0.5)), Rgb::splat(2.5));
+        // Across the seam: halfway between texels 3 and 0.
+        assert_eq!(map.lookup(Vec2::new(0.0, 0.25)), Rgb::splat(1.5));
+        assert_eq!(map.lookup(Vec2::new(0.125, 0.0)), Rgb::splat(0.0));
+        assert_eq!(map.lookup(Vec2::new(0.125, 1.0)), Rgb::splat(4.0));
+    }
+
+    #[test]
+    fn bad_maps_are_refused_with_the_reason() {
+        let err = EnvironmentMap::new("m.exr", 3, 2, vec![Rgb::ONE; 6]).unwrap_err();
+        assert!(err.to_string().contains("m.exr") && err.to_string().contains("3 x 2"));
+        let mut texels = vec![Rgb::ONE; 8];
+        texels[5] = Rgb::new(1.0, f32::NAN, 0.0);
+        let err = EnvironmentMap::new("m.exr", 4, 2, texels.clone()).unwrap_err();
+        assert!(err.problem.contains("(1, 1)"), "{err}");
+        texels[5] = Rgb::new(1.0, -0.5, 0.0);
+        assert!(EnvironmentMap::new("m.exr", 4, 2, texels).is_err());
+    }
+}

@@ -1,0 +1,272 @@
+//! Piecewise-constant distributions on `[0, 1]` and `[0, 1]^2`, sampled by
+//! inverting their cumulative distribution functions (pbrt-v4, sections
+//! A.4.2 and A.5.2 `PiecewiseConstant1D` / `PiecewiseConstant2D`).
+//!
+//! 1D: a function of `n` non-negative values `f_i`, constant on the cells
+//! `[i/n, (i+1)/n)`. With `c = integral f = sum f_i / n`:
+//!
+//! ```text
+//! p(x)    = f_i / c                  for x in cell i
+//! P(x)    = cdf_i + (x n - i) f_i / (n c),   cdf_i = sum_{k<i} f_k / (n c)
+//! sample: x = P^-1(u)
+//! ```
+//!
+//! A function that is zero everywhere (or not finite) becomes the uniform
+//! distribution, so that sampling never divides by zero. Cells of zero
+//! value are never sampled.
+//!
+//! 2D (`w` columns, `h` rows, row-major, row `v` first): the marginal
+//! density of the row, `p(v) = integral f(u, v) du / c`, and in each row the
+//! conditional density of the column, `p(u | v) = f(u, v) / integral f(u, v) du`;
+//! `p(u, v) = p(v) p(u | v) = f(u, v) / c`. A sample draws the row from the
+//! marginal with `u.y`, then the column from that row's conditional with
+//! `u.x`; the inverse maps a point back to the `u` that gives it.
+
+use glam::Vec2;
+
+/// A piecewise-constant density on `[0, 1]`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Distribution1D {
+    /// The function's values (non-negative), one per cell.
+    func: Vec<f32>,
+    /// `cdf[i]`: probability of the cells before `i`; `cdf[n] = 1`.
+    cdf: Vec<f32>,
+    /// Integral of the function over `[0, 1]` (0 when it was made uniform).
+    integral: f32,
+}
+
+/// A point drawn from a distribution and its density.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DistributionSample<T> {
+    /// The point, in `[0, 1)` (1D) or `[0, 1)^2` (2D).
+    pub x: T,
+    /// Density at the point with respect to length (1D) or area (2D); positive.
+    pub pdf: f32,
+    /// The cell the point lies in (the column for 2D).
+    pub cell: usize,
+}
+
+impl Distribution1D {
+    /// The distribution proportional to `func` (at least one cell).
+    /// Negative or non-finite values count as 0; a function with no
+    /// positive value gives the uniform distribution.
+    ///
+    /// # Panics
+    ///
+    /// If `func` is empty.
+    pub fn new(func: &[f32]) -> Self {
+        assert!(!func.is_empty(), "a distribution needs at least one cell");
+        let n = func.len();
+        let clean = |f: f32| if f.is_finite() && f > 0.0 { f } else { 0.0 };
+        let mut func: Vec<f32> = func.iter().map(|&f| clean(f)).collect();
+        let total: f64 = func.iter().map(|&f| f as f64).sum();
+        let integral = (total / n as f64) as f32;
+        if !(total > 0.0 && total.is_finite() && integral > 0.0) {
+            func.iter_mut().for_each(|f| *f = 1.0);
+            return Self::new(&func).with_integral(0.0);
+        }
+        let mut cdf = Vec::with_capacity(n + 1);
+        let mut running = 0.0f64;
+        cdf.push(0.0);
+        for &f in &func {
+            running += f as f64;
+            cdf.push((running / total) as f32);
+        }
+        cdf[n] = 1.0;
+        Distribution1D {
+            func,
+            cdf,
+            integral,
+        }
+    }
+
+    fn with_integral(mut self, integral: f32) -> Self {
+        self.integral = integral;
+        self
+    }
+
+    /// Number of cells.
+    pub fn len(&self) -> usize {
+        self.func.len()
+    }
+
+    /// Whether the distribution has no cells (never: [`Self::new`] refuses that).
+    pub fn is_empty(&self) -> bool {
+        self.func.is_empty()
+    }
+
+    /// Integral of the (cleaned) function over `[0, 1]`; 0 if it had no
+    /// positive value and the distribution is uniform instead.
+    pub fn integral(&self) -> f32 {
+        self.integral
+    }
+
+    /// The cumulative probabilities `cdf[0] = 0 <= ... <= cdf[n] = 1`.
+    pub fn cdf(&self) -> &[f32] {
+        &self.cdf
+    }
+
+    /// Probability of cell `i`.
+    pub fn cell_probability(&self, i: usize) -> f32 {
+        self.cdf[i + 1] - self.cdf[i]
+    }
+
+    /// The point `P^-1(u)` for `u` in `[0, 1)`, its density and its cell.
+    /// The cell always has positive probability.
+    pub fn sample(&self, u: f32) -> DistributionSample<f32> {
+        let n = self.len();
+        let u = u.clamp(0.0, 1.0);
+        // Last cell whose cdf is <= u: cdf[i] <= u < cdf[i + 1].
+        let i = (self.cdf.partition_point(|&c| c <= u).saturating_sub(1)).min(n - 1);
+        // Rounding can leave u on a cell of zero width: step back to one with mass.
+        let i = (0..=i)
+            .rev()
+            .find(|&k| self.cell_probability(k) > 0.0)
+            .unwrap_or(i);
+        let width = self.cell_probability(i);
+        let du = ((u - self.cdf[i]) / width).clamp(0.0, 1.0);
+        let x = ((i as f32 + du) / n as f32).min(1.0 - f32::EPSILON / 2.0);
+        DistributionSample {
+            x,
+            pdf: width * n as f32,
+            cell: i,
+        }
+    }
+
+    /// The cell of `x` in `[0, 1]` (1 belongs to the last cell).
+    pub fn cell_of(&self, x: f32) -> usize {
+        let n = self.len();
+        ((x * n as f32) as usize).min(n - 1)
+    }
+
+    /// Density at `x` in `[0, 1]`, per unit length.
+    pub fn pdf(&self, x: f32) -> f32 {
+        if !(0.0..=1.0).contains(&x) {
+            return 0.0;
+        }
+        self.cell_probability(self.cell_of(x)) * self.len() as f32
+    }
+
+    /// The cumulative distribution `P(x)`: the `u` that [`Self::sample`]
+    /// maps to `x` (for `x` in a cell of positive probability).
+    pub fn invert(&self, x: f32) -> f32 {
+        let x = x.clamp(0.0, 1.0);
+        let i = self.cell_of(x);
+        let t = (x * self.len() as f32 - i as f32).clamp(0.0, 1.0);
+        self.cdf[i] + t * self.cell_probability(i)
+    }
+}
+
+/// A piecewise-constant density on `[0, 1]^2`: `width x height` cells.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Distribution2D {
+    /// One distribution over the columns per row.
+    conditional: Vec<Distribution1D>,
+    /// Distribution of the rows, proportional to each row's integral.
+    marginal: Distribution1D,
+}
+
+impl Distribution2D {
+    /// The distribution proportional to `func`, `width x height` values in
+    /// rows (row `j` is `func[j * width..(j + 1) * width]`; `v` runs down
+    /// the rows).
+    ///
+    /// # Panics
+    ///
+    /// If `width` or `height` is 0 or `func` has not `width * height` values.
+    pub fn new(func: &[f32], width: usize, height: usize) -> Self {
+        assert!(width > 0 && height > 0 && func.len() == width * height);
+        let conditional: Vec<Distribution1D> =
+            func.chunks(width).map(Distribution1D::new).collect();
+        let row_integrals: Vec<f32> = conditional.iter().map(|d| d.integral()).collect();
+        Distribution2D {
+            marginal: Distribution1D::new(&row_integrals),
+            conditional,
+        }
+    }
+
+    pub fn width(&self) -> usize {
+        self.conditional[0].len()
+    }
+
+    pub fn height(&self) -> usize {
+        self.conditional.len()
+    }
+
+    /// A point for `u` in `[0, 1)^2` (row from `u.y`, column from `u.x`)
+    /// with its density per unit area; `cell` is the column, the row is
+    /// `floor(x.y * height)`.
+    pub fn sample(&self, u: Vec2) -> DistributionSample<Vec2> {
+        let row = self.marginal.sample(u.y);
+        let column = self.conditional[row.cell].sample(u.x);
+        DistributionSample {
+            x: Vec2::new(column.x, row.x),
+            pdf: row.pdf * column.pdf,
+            cell: column.cell,
+        }
+    }
+
+    /// Density at `p` in `[0, 1]^2`, per unit area.
+    pub fn pdf(&self, p: Vec2) -> f32 {
+        if !(0.0..=1.0).contains(&p.y) {
+            return 0.0;
+        }
+        let row = self.marginal.cell_of(p.y);
+        self.marginal.pdf(p.y) * self.conditional[row].pdf(p.x)
+    }
+
+    /// The `u` that [`Self::sample`] maps to `p`.
+    pub fn invert(&self, p: Vec2) -> Vec2 {
+        let row = self.marginal.cell_of(p.y.clamp(0.0, 1.0));
+        Vec2::new(self.conditional[row].invert(p.x), self.marginal.invert(p.y))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn one_dimension_samples_invert_and_skip_empty_cells() {
+        let d = Distribution1D::new(&[1.0, 0.0, 3.0, 0.0]);
+        assert_eq!(d.integral(), 1.0);
+        assert_eq!(d.cdf(), &[0.0, 0.25, 0.25, 1.0, 1.0]);
+        for k in 0..1000 {
+            let u = k as f32 / 1000.0;
+            let s = d.sample(u);
+            assert!(s.cell == 0 || s.cell == 2, "u {u}: cell {}", s.cell);
+            assert_eq!(s.pdf, d.pdf(s.x));
+            assert!((d.invert(s.x) - u).abs() < 1e-5, "u {u}");
+        }
+        assert_eq!(d.sample(0.25).cell, 2);
+        assert_eq!(d.pdf(0.3), 0.0);
+        assert_eq!(d.pdf(0.6), 3.0);
+    }
+
+    #[test]
+    fn a_function_without_mass_is_uniform() {
+        for f in [[0.0, 0.0], [-1.0, f32::NAN], [f32::INFINITY, 0.0]] {
+            let d = Distribution1D::new(&f);
+            assert_eq!(d.integral(), 0.0);
+            assert_eq!(d.pdf(0.2), 1.0);
+            assert_eq!(d.sample(0.7).x, 0.7);
+        }
+    }
+
+    #[test]
+    fn two_dimensions_sample_rows_then_columns() {
+        let d = Distribution2D::new(&[0.0, 1.0, 2.0, 1.0, 0.0, 0.0], 3, 2);
+        // Row 0 has 3/4 of the mass, row 1 a quarter; p = f / c with c = 4/6.
+        assert!((d.pdf(Vec2::new(0.5, 0.2)) - 1.5).abs() < 1e-6);
+        assert!((d.pdf(Vec2::new(0.9, 0.2)) - 3.0).abs() < 1e-6);
+        assert_eq!(d.pdf(Vec2::new(0.1, 0.2)), 0.0);
+        assert!((d.pdf(Vec2::new(0.2, 0.7)) - 1.5).abs() < 1e-6);
+        for k in 0..400 {
+            let u = Vec2::new((k % 20) as f32 / 20.0 + 0.01, (k / 20) as f32 / 20.0 + 0.01);
+            let s = d.sample(u);
+            assert!(s.pdf > 0.0);
+            assert!((s.pdf - d.pdf(s.x)).abs() < 1e-5 * s.pdf);
+            assert!((d.invert(s.x) - u).length() < 1e-4, "{u} -> {:?}", s.x);
+        }
+    }
+}

@@ -1,0 +1,340 @@
+//! The environment light (part 7) in the renderer:
+//!
+//! - furnace: a diffuse sphere of albedo 1 under a constant map of radiance
+//!   `L` shows `L` (it is convex, so every ray leaving it escapes and its
+//!   one bounce reflects all of `integral L cos / pi = L`), whatever the
+//!   strategy and the environment's sampling;
+//! - uniform and importance sampling of a non-constant map (with a black
+//!   band next to bright texels, where sampling texels instead of the
+//!   bilinear lookup would be biased) agree with each other and with BSDF
+//!   sampling alone (two-sample z-tests);
+//! - no NaN or infinite radiance under every map tried: a tiny bright sun
+//!   on the horizon (grazing a floor), at a pole, all black, the built-in sky;
+//! - map files: half-float RGBA OpenEXR and Radiance `.hdr` are read; bad
+//!   files give an error naming the file, never a panic.
+//!
+//! Seeds are fixed; each test's comparisons share `ALPHA` (Bonferroni).
+
+mod common;
+
+use std::path::Path;
+
+use common::{
+    accel, assert_mean_matches, assert_means_agree, diffuse, tracer, MeanEstimate, SceneBuilder,
+    ALPHA, HEMISPHERE, LIGHTS,
+};
+use glam::{Vec2, Vec3};
+use pathtracer::direct::DirectLights;
+use pathtracer::environment::{
+    builtin_sky, uv_to_direction, EnvironmentLight, EnvironmentMap, EnvironmentSampling,
+};
+use pathtracer::global::{DirectStrategy, PathTracer};
+use pathtracer::intersect::Ray;
+use pathtracer::lights::LightPdf;
+use pathtracer::math::rng::{next_2d, sampler};
+use pathtracer::math::warp::sample_uniform_sphere;
+use pathtracer::math::{luminance, Rgb};
+use pathtracer::scene::Scene;
+use pathtracer::world::World;
+
+const SAMPLINGS: [EnvironmentSampling; 2] = [
+    EnvironmentSampling::Importance,
+    EnvironmentSampling::Uniform,
+];
+
+const NO_MIS: DirectStrategy = DirectStrategy::Lights(DirectLights {
+    samples_per_light: 1,
+    mis: false,
+});
+
+fn constant_map(radiance: f32) -> EnvironmentMap {
+    EnvironmentMap::new("constant", 16, 8, vec![Rgb::splat(radiance); 128]).unwrap()
+}
+
+/// A bright lobe, a gradient, and a black band (rows 10 and 11 of 32)
+/// whose neighbours are bright.
+fn lumpy_map() -> EnvironmentMap {
+    let lobe = Vec3::new(0.5, 0.6, -0.62).normalize();
+    let texels = (0..64 * 32)
+        .map(|k| {
+            let (i, j) = (k % 64, k / 64);
+            if j == 10 || j == 11 {
+                return Rgb::ZERO;
+            }
+            let uv = Vec2::new((i as f32 + 0.5) / 64.0, (j as f32 + 0.5) / 32.0);
+            let d = uv_to_direction(uv);
+            let gradient = Rgb::new(0.3, 0.5, 0.8) * (1.0 + d.y);
+            let spot = 30.0 * (-(1.0 - d.dot(lobe)) / 0.05).exp();
+            let band = if j == 9 || j == 12 { 8.0 } else { 0.0 };
+            gradient + Rgb::new(1.0, 0.9, 0.7) * (spot + band)
+        })
+        .collect();
+    EnvironmentMap::new("lumpy", 64, 32, texels).unwrap()
+}
+
+/// A map of radiance 0.05 with one texel `(i, j)` of radiance `sun`.
+fn tiny_sun(i: usize, j: usize, sun: f32) -> EnvironmentMap {
+    let mut texels = vec![Rgb::splat(0.05); 128 * 64];
+    texels[j * 128 + i] = Rgb::new(sun, 0.9 * sun, 0.8 * sun);
+    EnvironmentMap::new("tiny sun", 128, 64, texels).unwrap()
+}
+
+/// A sphere of radius 1 at the origin, albedo `albedo`, and no light.
+fn lone_sphere(albedo: f32) -> Scene {
+    let mut b = SceneBuilder::new();
+    let m = b.material(diffuse(albedo));
+    b.sphere(Vec3::ZERO, 1.0, m);
+    b.finish()
+}
+
+/// A sphere of radius 0.5 resting on a floor quad.
+fn sphere_on_floor() -> Scene {
+    let mut b = SceneBuilder::new();
+    let floor = b.material(diffuse(0.5));
+    let ball = b.material(diffuse(0.8));
+    b.quad(
+        floor,
+        [
+            Vec3::new(-2.0, 0.0, 2.0),
+            Vec3::new(2.0, 0.0, 2.0),
+            Vec3::new(2.0, 0.0, -2.0),
+            Vec3::new(-2.0, 0.0, -2.0),
+        ],
+    );
+    b.sphere(Vec3::new(0.0, 0.5, 0.0), 0.5, ball);
+    b.finish()
+}
+
+/// Luminance of `n` paths along rays from random points around the
+/// origin (radius 3) towards random points near the origin, each path its
+/// own stream of seed `seed`.
+fn estimate(
+    scene: &Scene,
+    env: &EnvironmentLight,
+    tracer: &PathTracer,
+    n: usize,
+    seed: u64,
+) -> MeanEstimate {
+    let accel = accel(scene);
+    let world = World::new(scene, &accel).with_environment(Some(env.clone()));
+    MeanEstimate::of((0..n).map(|k| {
+        let mut rng = sampler(seed, k as u64);
+        let mut origin = 3.0 * sample_uniform_sphere(next_2d(&mut rng));
+        origin.y = origin.y.abs() + 0.2;
+        let target = 0.4 * sample_uniform_sphere(next_2d(&mut rng)) + Vec3::new(0.0, 0.5, 0.0);
+        let ray = Ray::new(origin, (target - origin).normalize());
+        let l = tracer.radiance(&world, &ray, &mut rng);
+        assert!(l.is_finite(), "non-finite radiance {l}");
+        luminance(l) as f64
+    }))
+}
+
+fn strategies() -> [(&'static str, DirectStrategy); 4] {
+    [
+        ("MIS", LIGHTS),
+        ("light sampling alone", NO_MIS),
+        ("hemisphere", HEMISPHERE),
+        ("BSDF sampling alone", DirectStrategy::BsdfOnly),
+    ]
+}
+
+#[test]
+fn a_white_sphere_under_a_constant_sky_shows_the_sky() {
+    let radiance = 0.8;
+    let scene = lone_sphere(1.0);
+    let cases: Vec<_> = SAMPLINGS
+        .iter()
+        .flat_map(|&s| strategies().map(|d| (s, d)))
+        .collect();
+    let alpha = ALPHA / cases.len() as f64;
+    for (k, (sampling, (name, direct))) in cases.into_iter().enumerate() {
+        let env = EnvironmentLight::new(constant_map(radiance), sampling);
+        let estimate = estimate(&scene, &env, &tracer(direct, 5, true), 40_000, 7 + k as u64);
+        // Exactly L for BSDF sampling alone (cosine sampling, albedo 1): a floor.
+        assert_mean_matches(
+            &format!("furnace, {sampling:?}, {name}"),
+            estimate,
+            radiance as f64,
+            alpha,
+            1e-5,
+        );
+    }
+}
+
+#[test]
+fn uniform_and_importance_sampling_agree_on_a_lumpy_map() {
+    let scene = sphere_on_floor();
+    let importance = EnvironmentLight::new(lumpy_map(), EnvironmentSampling::Importance);
+    let uniform = importance.with_sampling(EnvironmentSampling::Uniform);
+    let depths = [1, 3];
+    // Per depth: importance vs uniform, importance vs BSDF alone, importance
+    // with and without MIS.
+    let alpha = ALPHA / (3 * depths.len()) as f64;
+    for depth in depths {
+        let n = 150_000;
+        let by = |env: &EnvironmentLight, direct, seed| {
+            estimate(&scene, env, &tracer(direct, depth, true), n, seed)
+        };
+        let reference = by(&importance, LIGHTS, 100 + depth as u64);
+        let label = |what: &str| format!("{what}, m = {depth}");
+        assert_means_agree(
+            &label("importance vs uniform"),
+            reference,
+            by(&uniform, LIGHTS, 200 + depth as u64),
+            alpha,
+        );
+        assert_means_agree(
+            &label("importance vs BSDF alone"),
+            reference,
+            by(&importance, DirectStrategy::BsdfOnly, 300 + depth as u64),
+            alpha,
+        );
+        assert_means_agree(
+            &label("MIS vs light sampling alone"),
+            reference,
+            by(&importance, NO_MIS, 400 + depth as u64),
+            alpha,
+        );
+    }
+}
+
+#[test]
+fn no_map_gives_non_finite_radiance() {
+    let maps = [
+        ("sun on the horizon", tiny_sun(40, 31, 1e6)),
+        ("sun just above the horizon", tiny_sun(77, 30, 1e6)),
+        ("sun at the pole", tiny_sun(5, 0, 1e6)),
+        ("sun at the nadir", tiny_sun(90, 63, 1e6)),
+        ("black", constant_map(0.0)),
+        ("built-in sky", builtin_sky().unwrap()),
+        ("lumpy", lumpy_map()),
+    ];
+    let scene = sphere_on_floor();
+    for (name, map) in maps {
+        for sampling in SAMPLINGS {
+            let env = EnvironmentLight::new(map.clone(), sampling);
+            let mut rng = sampler(11, 0);
+            for _ in 0..20_000 {
+                let u = next_2d(&mut rng);
+                if let Some(s) = env.sample_li(u) {
+                    let LightPdf::SolidAngle(pdf) = s.pdf else {
+                        panic!("{name}: an environment sample is not a delta");
+                    };
+                    assert!(pdf > 0.0 && pdf.is_finite() && s.radiance.is_finite());
+                    assert!((s.wi.length() - 1.0).abs() < 1e-4);
+                }
+            }
+            for (label, direct) in strategies() {
+                let tracer = tracer(direct, 4, true);
+                let e = estimate(&scene, &env, &tracer, 3_000, 5);
+                assert!(e.mean.is_finite(), "{name}, {sampling:?}, {label}");
+            }
+        }
+    }
+}
+
+#[test]
+fn the_power_of_a_constant_sky() {
+    // pi R^2 integral L dw = pi R^2 4 pi L.
+    let env = EnvironmentLight::new(constant_map(2.0), EnvironmentSampling::Importance);
+    let power = env.power(3.0).x;
+    let expected = std::f32::consts::PI * 9.0 * 4.0 * std::f32::consts::PI * 2.0;
+    assert!(
+        (power / expected - 1.0).abs() < 1e-2,
+        "{power} vs {expected}"
+    );
+}
+
+// --- Map files ---
+
+fn write_exr_f32(path: &Path, width: u32, height: u32, texels: &[f32]) {
+    image::Rgb32FImage::from_raw(width, height, texels.to_vec())
+        .unwrap()
+        .save(path)
+        .unwrap();
+}
+
+#[test]
+fn half_float_rgba_exr_and_radiance_hdr_maps_are_read() {
+    let dir = tempfile::tempdir().unwrap();
+    let exr = dir.path().join("half.exr");
+    exr::prelude::write_rgba_file(&exr, 8, 4, |x, y| {
+        let v = exr::prelude::f16::from_f32((x + 8 * y) as f32 / 4.0);
+        (
+            v,
+            v,
+            exr::prelude::f16::from_f32(0.5),
+            exr::prelude::f16::ONE,
+        )
+    })
+    .unwrap();
+    let map = EnvironmentMap::load(&exr).unwrap();
+    assert_eq!((map.width(), map.height()), (8, 4));
+    assert_eq!(map.texel(3, 2), Rgb::new(4.75, 4.75, 0.5));
+
+    let hdr = dir.path().join("sky.hdr");
+    let pixels: Vec<image::Rgb<f32>> = (0..32).map(|k| image::Rgb([k as f32, 1.0, 0.25])).collect();
+    let file = std::fs::File::create(&hdr).unwrap();
+    image::codecs::hdr::HdrEncoder::new(file)
+        .encode(&pixels, 8, 4)
+        .unwrap();
+    let map = EnvironmentMap::load(&hdr).unwrap();
+    assert_eq!((map.width(), map.height()), (8, 4));
+    // RGBE keeps 8 bits of mantissa per channel.
+    let t = map.texel(5, 1);
+    assert!(
+        (t - Rgb::new(13.0, 1.0, 0.25)).abs().max_element() < 0.1,
+        "{t}"
+    );
+}
+
+#[test]
+fn bad_map_files_give_errors_naming_the_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = |name: &str| dir.path().join(name);
+    std::fs::write(path("text.exr"), "not an image").unwrap();
+    image::RgbImage::new(8, 4).save(path("ldr.png")).unwrap();
+    write_exr_f32(&path("square.exr"), 4, 4, &[1.0; 48]);
+    let mut nan = vec![1.0; 8 * 4 * 3];
+    nan[7] = f32::NAN;
+    write_exr_f32(&path("nan.exr"), 8, 4, &nan);
+    let mut negative = vec![1.0; 8 * 4 * 3];
+    negative[40] = -2.0;
+    write_exr_f32(&path("negative.exr"), 8, 4, &negative);
+    let mut infinite = vec![1.0; 8 * 4 * 3];
+    infinite[3] = f32::INFINITY;
+    write_exr_f32(&path("infinite.exr"), 8, 4, &infinite);
+    for (name, expect) in [
+        ("missing.exr", "cannot open"),
+        ("text.exr", "cannot decode"),
+        ("ldr.png", "OpenEXR"),
+        ("square.exr", "4 x 4"),
+        ("nan.exr", "texel (2, 0)"),
+        ("negative.exr", "texel (5, 1)"),
+        ("infinite.exr", "texel (1, 0)"),
+    ] {
+        let err = EnvironmentMap::load(&path(name)).unwrap_err().to_string();
+        eprintln!("{err}");
+        assert!(
+            err.contains(name) && err.contains(expect),
+            "{name}: {err} (expected {expect:?})"
+        );
+    }
+    // Through a binary's driver: an error, not a panic, and no image.
+    let out = path("out.png");
+    let args = <pathtracer::cli::CourseArgs as clap::Parser>::parse_from([
+        "part7",
+        "-r",
+        "8",
+        "6",
+        "-e",
+        path("nan.exr").to_str().unwrap(),
+        "-f",
+        out.to_str().unwrap(),
+    ]);
+    let err = pathtracer::cli::drivers::part7(&args)
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("nan.exr"), "{err}");
+    assert!(!out.exists());
+}
