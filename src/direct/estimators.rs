@@ -2,6 +2,10 @@
 
 use rand::Rng;
 
+use glam::Vec3;
+
+use crate::global::emission::{found_emission, PrevVertex};
+use crate::global::DirectStrategy;
 use crate::intersect::Intersector;
 use crate::lights::{Light, LightPdf, LightSample};
 use crate::math::mis::power_heuristic;
@@ -13,8 +17,10 @@ use crate::world::{ShadingPoint, World};
 /// Direct lighting by uniform hemisphere sampling (`-H`).
 ///
 /// `N` directions uniform on the hemisphere of the shading normal,
-/// `pdf = 1 / (2 pi)`; each ray that hits an emissive surface brings its
-/// emission, each that escapes the lights at infinity:
+/// `pdf = 1 / (2 pi)`; each ray brings the light it finds: an emissive
+/// surface, a rectangle light it crosses, the lights at infinity if it
+/// escapes (the same lights light sampling samples; a surface that only
+/// stands in for a rectangle light is not counted twice):
 ///
 /// ```text
 /// L_o = 1/N sum_j f(wo, wj) L_e(wj) cos(theta_j) / (1 / 2 pi)
@@ -38,10 +44,18 @@ impl DirectHemisphere {
     ) -> Rgb {
         let n = self.samples.max(1);
         let mut sum = Rgb::ZERO;
+        // Every light a ray can find, in full, as BSDF sampling alone counts it.
+        let from = PrevVertex::Scattering {
+            p: point.hit.p,
+            bsdf_pdf: uniform_hemisphere_pdf(Vec3::Z),
+        };
         for _ in 0..n {
             let wi_local = sample_uniform_hemisphere(next_2d(rng));
             let wi = point.frame.to_world(wi_local);
-            let incoming = world.emitted(&point.hit.spawn_ray(wi));
+            let ray = point.hit.spawn_ray(wi);
+            let next = world.trace(&ray);
+            let incoming =
+                found_emission(world, &DirectStrategy::BsdfOnly, &ray, next.as_ref(), &from);
             let f = point.bsdf.f(point.wo, wi_local);
             sum += f * incoming * wi_local.z / uniform_hemisphere_pdf(wi_local);
         }

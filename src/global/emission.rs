@@ -18,14 +18,19 @@
 //! `w_bsdf = power_heuristic(1, p_bsdf, N, p_light)`: the BSDF sample's
 //! side of the multiple importance sampling that [`crate::direct::DirectLights`]
 //! weighs its `N` light samples with. With `-H` the hemisphere rays at the
-//! previous vertex already counted every emitter; with `--bsdf-only`
-//! nothing else counts any (a stand-in's light is then found as its
-//! rectangle, like every rectangle light after a scattering vertex).
+//! previous vertex already counted every light (through [`found_emission`]
+//! with the weights of `--bsdf-only`); with `--bsdf-only` nothing else
+//! counts any (a stand-in's light is then found as its rectangle, like
+//! every rectangle light after a scattering vertex).
 
 use glam::Vec3;
 
 use super::DirectStrategy;
+use crate::intersect::{Intersector, Ray};
+use crate::lights::{EmitterRole, LightHit};
 use crate::math::mis::power_heuristic;
+use crate::math::Rgb;
+use crate::world::{ShadingPoint, World};
 
 /// Where the ray that found the emission started.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -65,4 +70,93 @@ pub fn emission_weight(direct: &DirectStrategy, prev: &PrevVertex, emitter: Emit
             }
         }
     }
+}
+
+/// Emission that `ray`, leaving `prev`, finds under the strategy `direct`:
+/// the surface it hits (`next`) by its role, the rectangle lights it
+/// crosses before that surface (they are not geometry), or the lights at
+/// infinity if it escapes; each weighted by [`emission_weight`]. Light
+/// densities are evaluated only for multiple importance sampling.
+///
+/// The hemisphere estimator of part 3 counts its rays' light through here
+/// too, with the weights of `--bsdf-only` (every light in full, stand-ins
+/// not at all), so that it sees the same lights as light sampling.
+pub fn found_emission<I: Intersector>(
+    world: &World<I>,
+    direct: &DirectStrategy,
+    ray: &Ray,
+    next: Option<&ShadingPoint>,
+    prev: &PrevVertex,
+) -> Rgb {
+    let lights = &world.lights;
+    // What light sampling at `prev` would have done for `light`.
+    let sampled = |light: usize, hit: Option<LightHit>| match (direct, *prev) {
+        (DirectStrategy::Lights(d), PrevVertex::Scattering { p, .. }) if d.mis => {
+            Emitter::Sampled {
+                light_pdf: lights.lights[light].pdf_li(p, ray.dir, hit),
+                samples: d.samples_of(&lights.lights[light]),
+            }
+        }
+        _ => Emitter::Sampled {
+            light_pdf: 0.0,
+            samples: 1,
+        },
+    };
+    let weight = |emitter| emission_weight(direct, prev, emitter);
+    let mut le = Rgb::ZERO;
+    let mut role = EmitterRole::Dark;
+    match next {
+        None => {
+            for (i, light) in lights.infinite() {
+                le += light.escaped_radiance(ray.dir) * weight(sampled(i, None));
+            }
+        }
+        Some(point) if point.emission != Rgb::ZERO => {
+            role = lights.role(point.hit.primitive);
+            let emitter = match role {
+                EmitterRole::Dark => None,
+                EmitterRole::Shown { .. } => Some(Emitter::Shown),
+                EmitterRole::Unsampled => Some(Emitter::Unsampled),
+                EmitterRole::Sampled { light, member } => {
+                    let at = LightHit {
+                        point: point.hit.p,
+                        member,
+                    };
+                    Some(sampled(light as usize, Some(at)))
+                }
+            };
+            if let Some(emitter) = emitter {
+                le += point.emission * weight(emitter);
+            }
+        }
+        Some(_) => {}
+    }
+    // Rectangle lights: after the camera or a delta bounce a rectangle
+    // shows itself unless a stand-in shows it; after scattering, only the
+    // strategies in which BSDF rays find lights count it.
+    let after_scattering = matches!(prev, PrevVertex::Scattering { .. });
+    let t_hit = next.map_or(f32::INFINITY, |p| p.hit.t);
+    for (i, rect, has_stand_in) in lights.rects() {
+        let wanted = if after_scattering {
+            direct.bsdf_rays_find_lights()
+        } else {
+            !has_stand_in
+        };
+        let Some(t) = rect.hit_distance(ray).filter(|_| wanted) else {
+            continue;
+        };
+        // A stand-in lies on its rectangle's plane or just behind it.
+        let slack = if role
+            == (EmitterRole::Shown {
+                light: Some(i as u32),
+            }) {
+            0.02 * rect.diagonal()
+        } else {
+            0.0
+        };
+        if t <= t_hit * (1.0 + 1e-3) + slack {
+            le += rect.radiance_at(t) * weight(sampled(i, None));
+        }
+    }
+    le
 }

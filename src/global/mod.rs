@@ -37,7 +37,6 @@ use rand::Rng;
 
 use crate::direct::{DirectHemisphere, DirectLights};
 use crate::intersect::{Intersector, Ray};
-use crate::lights::{EmitterRole, LightHit};
 use crate::math::rng::{next_2d, Sampler};
 use crate::math::Rgb;
 use crate::world::{ShadingPoint, World};
@@ -147,7 +146,11 @@ impl PathTracer {
                 return l;
             }
             beta *= sample.weight() / q;
-            if beta == Rgb::ZERO || !beta.is_finite() {
+            if !beta.is_finite() {
+                // Counted by the render as a rejected sample, not hidden.
+                return Rgb::splat(f32::NAN);
+            }
+            if beta == Rgb::ZERO {
                 return l;
             }
             prev = if sample.is_delta() {
@@ -186,9 +189,7 @@ impl PathTracer {
                 && world.lights.has_unsampled_emitters())
     }
 
-    /// Emission that `ray`, leaving `prev`, finds: the surface it hits
-    /// (`next`), the rectangle lights it crosses first, or the lights at
-    /// infinity if it escapes; each weighted by [`emission_weight`].
+    /// Emission that `ray`, leaving `prev`, finds ([`emission::found_emission`]).
     #[doc(alias = "zero_bounce_radiance")]
     pub fn found_emission<I: Intersector>(
         &self,
@@ -197,80 +198,6 @@ impl PathTracer {
         next: Option<&ShadingPoint>,
         prev: &PrevVertex,
     ) -> Rgb {
-        let lights = &world.lights;
-        let samples = |light: usize| match self.direct {
-            DirectStrategy::Lights(d) => d.samples_of(&lights.lights[light]),
-            DirectStrategy::Hemisphere(_) | DirectStrategy::BsdfOnly => 1,
-        };
-        let light_pdf = |light: usize, hit: Option<LightHit>| match *prev {
-            PrevVertex::Scattering { p, .. } => lights.lights[light].pdf_li(p, ray.dir, hit),
-            PrevVertex::CameraOrDelta => 0.0,
-        };
-        let weight = |emitter| emission_weight(&self.direct, prev, emitter);
-        let mut le = Rgb::ZERO;
-        let mut role = EmitterRole::Dark;
-        match next {
-            None => {
-                for (i, light) in lights.infinite() {
-                    let emitter = Emitter::Sampled {
-                        light_pdf: light_pdf(i, None),
-                        samples: samples(i),
-                    };
-                    le += light.escaped_radiance(ray.dir) * weight(emitter);
-                }
-            }
-            Some(point) if point.emission != Rgb::ZERO => {
-                role = lights.role(point.hit.primitive);
-                let emitter = match role {
-                    EmitterRole::Dark => None,
-                    EmitterRole::Shown => Some(Emitter::Shown),
-                    EmitterRole::Unsampled => Some(Emitter::Unsampled),
-                    EmitterRole::Sampled { light, member } => {
-                        let at = LightHit {
-                            point: point.hit.p,
-                            member,
-                        };
-                        Some(Emitter::Sampled {
-                            light_pdf: light_pdf(light as usize, Some(at)),
-                            samples: samples(light as usize),
-                        })
-                    }
-                };
-                if let Some(emitter) = emitter {
-                    le += point.emission * weight(emitter);
-                }
-            }
-            Some(_) => {}
-        }
-        // Rectangle lights are not geometry: rays find them here, in front
-        // of the surface hit (or on it, when it is their stand-in). After
-        // the camera or a delta bounce a rectangle shows itself unless a
-        // stand-in shows it; after scattering only multiple importance
-        // sampling has a use for it.
-        let after_scattering = matches!(prev, PrevVertex::Scattering { .. });
-        let t_hit = next.map_or(f32::INFINITY, |p| p.hit.t);
-        for (i, rect, has_stand_in) in lights.rects() {
-            let wanted = if after_scattering {
-                self.direct.bsdf_rays_find_lights()
-            } else {
-                !has_stand_in
-            };
-            let Some(t) = rect.hit_distance(ray).filter(|_| wanted) else {
-                continue;
-            };
-            let slack = if role == EmitterRole::Shown {
-                0.02 * rect.diagonal()
-            } else {
-                0.0
-            };
-            if t <= t_hit * (1.0 + 1e-3) + slack {
-                let emitter = Emitter::Sampled {
-                    light_pdf: light_pdf(i, None),
-                    samples: samples(i),
-                };
-                le += rect.radiance_at(t) * weight(emitter);
-            }
-        }
-        le
+        emission::found_emission(world, &self.direct, ray, next, prev)
     }
 }

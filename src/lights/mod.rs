@@ -48,6 +48,18 @@ use crate::environment::EnvironmentLight;
 use crate::math::Rgb;
 use crate::scene::Light as SceneLight;
 
+/// The unit normal of the plane the edges `a` and `b` span, on the side of
+/// `direction` (the file's emitting direction, kept when the edges span
+/// no plane).
+fn plane_normal(a: Vec3, b: Vec3, direction: Vec3) -> Vec3 {
+    let n = a.cross(b).normalize_or_zero();
+    match n.dot(direction) {
+        d if d > 0.0 => n,
+        d if d < 0.0 => -n,
+        _ => direction,
+    }
+}
+
 /// Where a ray met a light that has an area: the point, and which member
 /// of the light (which triangle of [`EmissiveTriangles`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -82,7 +94,7 @@ impl Light {
             } => Light::Rect(RectLight {
                 radiance,
                 center,
-                normal: direction,
+                normal: plane_normal(dim_x, dim_y, direction),
                 dim_x,
                 dim_y,
                 convention,

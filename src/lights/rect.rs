@@ -43,8 +43,11 @@ pub struct RectLight {
 }
 
 impl RectLight {
+    /// `|dim_x x dim_y|`: the area of the parallelogram the edges span
+    /// (a rectangle's `|dim_x| |dim_y|`; a sheared transform gives a
+    /// parallelogram, still sampled uniformly).
     pub fn area(&self) -> f32 {
-        self.dim_x.length() * self.dim_y.length()
+        self.dim_x.cross(self.dim_y).length()
     }
 
     /// The longer diagonal of the rectangle.
@@ -82,10 +85,16 @@ impl RectLight {
             return None;
         }
         let t = self.normal.dot(self.center - p) / denom;
+        // Coordinates of the crossing in the edges' basis (dual basis, so
+        // that a parallelogram is handled as well as a rectangle).
         let local = p + t * wi - self.center;
-        let (sx, sy) = (self.dim_x.length_squared(), self.dim_y.length_squared());
-        let inside =
-            (local.dot(self.dim_x) / sx).abs() <= 0.5 && (local.dot(self.dim_y) / sy).abs() <= 0.5;
+        let (a, b) = (self.dim_x, self.dim_y);
+        let (aa, ab, bb) = (a.dot(a), a.dot(b), b.dot(b));
+        let det = aa * bb - ab * ab;
+        let (la, lb) = (local.dot(a), local.dot(b));
+        let s_coord = (bb * la - ab * lb) / det;
+        let t_coord = (aa * lb - ab * la) / det;
+        let inside = s_coord.abs() <= 0.5 && t_coord.abs() <= 0.5;
         (t > 0.0 && t.is_finite() && inside).then_some(t)
     }
 

@@ -78,6 +78,6 @@ impl SurfacePoint {
         let facing = -self.normal.dot(wi);
         let cos_emitter = if self.two_sided { facing.abs() } else { facing };
         let pdf = self.area_pdf * distance_squared / cos_emitter;
-        (cos_emitter > 0.0 && pdf.is_finite()).then_some(pdf)
+        (cos_emitter > 0.0 && pdf > 0.0 && pdf.is_finite()).then_some(pdf)
     }
 }

@@ -35,8 +35,9 @@ pub enum EmitterRole {
     /// The surface emits nothing.
     Dark,
     /// Counted only after the camera or a delta bounce: it shows a light
-    /// that light sampling covers everywhere else.
-    Shown,
+    /// that light sampling covers everywhere else (the rectangle light
+    /// `light` when it stands in for one).
+    Shown { light: Option<u32> },
     /// Member `member` of light `light`, which samples it: counted with a
     /// multiple importance sampling weight.
     Sampled { light: u32, member: u32 },
@@ -83,13 +84,18 @@ impl LightSet {
                 let m = m as usize;
                 match scene.materials.get(m) {
                     Some(_) if !emits(m) => EmitterRole::Dark,
-                    Some(_) if stand_in[m] || course => EmitterRole::Shown,
+                    Some(_) if stand_in[m] || course => EmitterRole::Shown { light: None },
                     Some(_) => EmitterRole::Unsampled,
                     None => EmitterRole::Dark,
                 }
             };
             roles.extend(scene.mesh.materials.iter().map(|&m| role_of_material(m)));
             roles.extend(scene.spheres.iter().map(|s| role_of_material(s.material)));
+            for (role, &light) in roles.iter_mut().zip(&stand_ins.triangle_light) {
+                if let EmitterRole::Shown { light: shown } = role {
+                    *shown = light;
+                }
+            }
             if !triangles.is_empty() {
                 let light = lights.len() as u32;
                 for (member, &t) in triangles.triangle_ids().iter().enumerate() {
@@ -200,11 +206,15 @@ fn scene_radius(scene: &Scene) -> f32 {
 
 /// Which emissive surfaces stand in for an area light (see the module
 /// docs): per material, whether it is a stand-in; per scene light, whether
-/// some stand-in shows it. Spheres are never stand-ins, and a material no
-/// primitive uses is not one.
+/// some stand-in shows it; per triangle, the light it shows. A material is
+/// a stand-in when each of its triangles shows some light (not
+/// necessarily the same: two lamps may share one material). Spheres are
+/// never stand-ins, and a material no primitive uses is not one.
 pub struct StandIns {
     pub materials: Vec<bool>,
     pub lights: Vec<bool>,
+    /// The light each triangle shows, if any (whatever its material).
+    pub triangle_light: Vec<Option<u32>>,
 }
 
 impl StandIns {
@@ -214,23 +224,27 @@ impl StandIns {
             .iter()
             .map(|m| matches!(m, Material::Emission { .. }))
             .collect();
-        // Per material, the lights every one of its triangles is near.
-        let mut near: Vec<Vec<bool>> = vec![vec![true; scene.lights.len()]; proxy.len()];
+        let mut used = vec![false; scene.materials.len()];
+        let mut triangle_light = Vec::with_capacity(scene.mesh.triangles.len());
         for (corners, &material) in scene.mesh.triangles.iter().zip(&scene.mesh.materials) {
             let m = material as usize;
-            let Some(&Material::Emission { radiance }) = scene.materials.get(m) else {
-                continue;
-            };
-            for (light, near_it) in scene.lights.iter().zip(near[m].iter_mut()) {
-                *near_it &= shows(scene, corners, radiance, light);
-            }
-            proxy[m] &= near[m].iter().any(|&n| n);
-        }
-        let mut used = vec![false; scene.materials.len()];
-        for &m in &scene.mesh.materials {
-            if let Some(u) = used.get_mut(m as usize) {
+            if let Some(u) = used.get_mut(m) {
                 *u = true;
             }
+            let shown = match scene.materials.get(m) {
+                Some(&Material::Emission { radiance }) => scene
+                    .lights
+                    .iter()
+                    .position(|light| shows(scene, corners, radiance, light))
+                    .map(|l| l as u32),
+                _ => None,
+            };
+            if shown.is_none() {
+                if let Some(p) = proxy.get_mut(m) {
+                    *p = false;
+                }
+            }
+            triangle_light.push(shown);
         }
         for sphere in &scene.spheres {
             if let Some(p) = proxy.get_mut(sphere.material as usize) {
@@ -238,16 +252,25 @@ impl StandIns {
             }
         }
         let materials: Vec<bool> = proxy.iter().zip(&used).map(|(&p, &u)| p && u).collect();
-        let lights = (0..scene.lights.len())
-            .map(|l| (0..materials.len()).any(|m| materials[m] && near[m][l]))
-            .collect();
-        StandIns { materials, lights }
+        let mut lights = vec![false; scene.lights.len()];
+        for (&light, &m) in triangle_light.iter().zip(&scene.mesh.materials) {
+            if let (Some(l), Some(true)) = (light, materials.get(m as usize)) {
+                lights[l as usize] = true;
+            }
+        }
+        StandIns {
+            materials,
+            lights,
+            triangle_light,
+        }
     }
 }
 
 /// Whether a triangle of emitted `radiance` lies on the area light `light`
-/// (each corner within 0.55 of the light's diagonal from its centre and
-/// within 1 % of the diagonal of its plane) with the same radiance.
+/// with the same radiance: each corner within 0.55 of the light's diagonal
+/// from its centre, and on the light's plane or behind it (up to 1 % of
+/// the diagonal; not in front, where it would block the light's shadow
+/// rays while BSDF rays that hit it count the light).
 fn shows(scene: &Scene, corners: &[u32; 3], radiance: Rgb, light: &SceneLight) -> bool {
     let SceneLight::Area {
         radiance: light_radiance,
@@ -263,7 +286,10 @@ fn shows(scene: &Scene, corners: &[u32; 3], radiance: Rgb, light: &SceneLight) -
     light_radiance == radiance
         && corners.iter().all(|&v| {
             let q = scene.mesh.positions[v as usize] - center;
-            q.length() <= 0.55 * diagonal && q.dot(direction).abs() <= 0.01 * diagonal
+            let in_front = q.dot(direction);
+            q.length() <= 0.55 * diagonal
+                && in_front <= 1e-4 * diagonal
+                && in_front >= -0.01 * diagonal
         })
 }
 
@@ -290,10 +316,8 @@ mod tests {
         let roles: Vec<EmitterRole> = (0..scene.mesh.triangles.len() as u32)
             .map(|t| set.role(t))
             .collect();
-        assert_eq!(
-            roles.iter().filter(|&&r| r == EmitterRole::Shown).count(),
-            2
-        );
+        let shown = EmitterRole::Shown { light: Some(0) };
+        assert_eq!(roles.iter().filter(|&&r| r == shown).count(), 2);
         assert!(!roles
             .iter()
             .any(|r| matches!(r, EmitterRole::Sampled { .. })));
@@ -324,5 +348,72 @@ mod tests {
         // The course's starter samples scene lights only: the quad is just shown.
         let course = LightSet::new(&scene, LightConvention::Course);
         assert!(course.lights.is_empty());
+    }
+
+    #[test]
+    fn two_lamps_may_share_one_stand_in_material() {
+        let mut scene = cornell_box();
+        let SceneLight::Area {
+            radiance,
+            center,
+            direction,
+            dim_x,
+            dim_y,
+        } = scene.lights[0]
+        else {
+            unreachable!()
+        };
+        // A second lamp, and a copy of the quad on it with the same material.
+        let shift = Vec3::new(0.0, 0.0, 0.9);
+        scene.lights.push(SceneLight::Area {
+            radiance,
+            center: center + shift,
+            direction,
+            dim_x,
+            dim_y,
+        });
+        let mesh = &mut scene.mesh;
+        let quad: Vec<usize> = (0..mesh.triangles.len())
+            .filter(|&t| {
+                matches!(
+                    scene.materials[mesh.materials[t] as usize],
+                    Material::Emission { .. }
+                )
+            })
+            .collect();
+        for t in quad {
+            let base = mesh.positions.len() as u32;
+            let corners = mesh.triangles[t];
+            for v in corners {
+                mesh.positions.push(mesh.positions[v as usize] + shift);
+                mesh.normals.push(mesh.normals[v as usize]);
+            }
+            mesh.triangles.push([base, base + 1, base + 2]);
+            mesh.materials.push(mesh.materials[t]);
+        }
+        let stand_ins = StandIns::of(&scene);
+        assert_eq!(stand_ins.lights, vec![true, true]);
+        let set = LightSet::new(&scene, LightConvention::Physical);
+        assert_eq!(set.lights.len(), 2, "no light counted twice");
+        assert!(set.emissive_triangles().is_none());
+    }
+
+    #[test]
+    fn a_quad_in_front_of_its_lamp_is_not_a_stand_in() {
+        let mut scene = cornell_box();
+        // 0.5 % of the diagonal towards the room: it would shadow the lamp.
+        let SceneLight::Area { direction, .. } = scene.lights[0] else {
+            unreachable!()
+        };
+        for (t, &m) in scene.mesh.triangles.iter().zip(&scene.mesh.materials) {
+            if matches!(scene.materials[m as usize], Material::Emission { .. }) {
+                for &v in t {
+                    scene.mesh.positions[v as usize] += 0.005 * direction;
+                }
+            }
+        }
+        let stand_ins = StandIns::of(&scene);
+        assert_eq!(stand_ins.lights, vec![false]);
+        assert!(stand_ins.materials.iter().all(|&m| !m));
     }
 }

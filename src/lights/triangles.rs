@@ -27,7 +27,7 @@ use crate::scene::Scene;
 
 /// One emissive triangle.
 #[derive(Clone, Copy, Debug, PartialEq)]
-struct Emitter {
+struct EmissiveTriangle {
     corners: [Vec3; 3],
     /// Unit normal (either side emits).
     normal: Vec3,
@@ -37,7 +37,7 @@ struct Emitter {
     pmf: f32,
 }
 
-impl Emitter {
+impl EmissiveTriangle {
     fn point(&self, q: Vec3) -> SurfacePoint {
         SurfacePoint {
             q,
@@ -52,7 +52,7 @@ impl Emitter {
 /// The emissive triangles of a scene with a power-proportional pmf.
 #[derive(Clone, Debug, Default)]
 pub struct EmissiveTriangles {
-    emitters: Vec<Emitter>,
+    emitters: Vec<EmissiveTriangle>,
     /// Running sums of the emitters' powers; the last is the total.
     cdf: Vec<f32>,
     /// The scene's triangle index of each emitter.
@@ -83,7 +83,7 @@ impl EmissiveTriangles {
             total += area * luminance(radiance);
             set.cdf.push(total);
             set.triangle_ids.push(t as u32);
-            set.emitters.push(Emitter {
+            set.emitters.push(EmissiveTriangle {
                 corners,
                 normal: cross.normalize(),
                 area,

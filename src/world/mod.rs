@@ -6,13 +6,10 @@ pub mod shading_point;
 
 pub use shading_point::ShadingPoint;
 
-use glam::Vec3;
-
 use crate::environment::EnvironmentLight;
 use crate::intersect::{Intersector, Ray};
 use crate::lights::{LightConvention, LightSet};
 use crate::materials::BsdfOptions;
-use crate::math::Rgb;
 use crate::scene::{Material, Scene};
 
 /// Choices about the scene's appearance that a render makes once.
@@ -69,27 +66,5 @@ impl<'a, I: Intersector> World<'a, I> {
             &material,
             self.bsdf_options,
         ))
-    }
-
-    /// Radiance arriving along `ray` straight from an emitter: the emission
-    /// of the first surface it hits, or what the lights at infinity show
-    /// if it escapes.
-    pub fn emitted(&self, ray: &Ray) -> Rgb {
-        match self.intersector.intersect(ray) {
-            Some(hit) => self
-                .materials
-                .get(hit.material as usize)
-                .map_or(Rgb::ZERO, Material::emission),
-            None => self.escaped(ray.dir),
-        }
-    }
-
-    /// Radiance of the lights at infinity along the unit direction `w` of
-    /// a ray that escapes.
-    pub fn escaped(&self, w: Vec3) -> Rgb {
-        self.lights
-            .infinite()
-            .map(|(_, l)| l.escaped_radiance(w))
-            .sum()
     }
 }
