@@ -10,7 +10,8 @@
 //!   importance sampling), given where the direction meets the light;
 //! - [`Light::escaped_radiance`]: the radiance a ray that escapes the scene
 //!   sees (lights at infinity);
-//! - [`Light::power`]: the radiant power, for choosing among lights.
+//! - [`Light::power`]: the radiant power (`--info` prints it in the
+//!   plan; a sampler choosing among many lights by power would use it).
 //!
 //! | kind | file | sampled by |
 //! | --- | --- | --- |

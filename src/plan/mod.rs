@@ -4,7 +4,7 @@
 //!
 //! | decision | when | what it saves |
 //! | --- | --- | --- |
-//! | light sampling | some light can be sampled and some surface scatters non-deltas | shadow rays where nothing could be found |
+//! | light sampling | some light can be sampled and some surface scatters non-deltas | nothing: the integrator skips it at delta vertices anyway; the plan reports it |
 //! | multiple importance sampling | a light BSDF rays can find (area, emissive triangles, sky) and a non-delta BSDF | the BSDF density per light sample and the last ray of every path |
 //! | lens | `-b > 0` | the lens sample and its disk warp per camera ray |
 //!
@@ -18,7 +18,7 @@ use crate::direct::DirectLights;
 use crate::global::{DirectStrategy, PathTracer};
 use crate::lights::{Light, LightSet};
 use crate::materials::{Bsdf, BsdfOptions};
-use crate::math::Rgb;
+use crate::math::{luminance, Rgb};
 use crate::scene::{Material, Scene};
 
 /// The kinds of scattering a scene's used materials have.
@@ -123,6 +123,20 @@ impl Plan {
             ),
             format!("plan: materials: {}", bsdf_summary(&bsdfs)),
         ];
+        if !lights.lights.is_empty() {
+            let powers: Vec<String> = lights
+                .lights
+                .iter()
+                .map(|l| {
+                    let watts = luminance(l.power(lights.scene_radius()));
+                    format!("{} {watts:.4}", l.kind())
+                })
+                .collect();
+            lines.push(format!(
+                "plan: light power (luminance of W, lights at infinity through the scene's bounding sphere): {}",
+                powers.join(", ")
+            ));
+        }
         lines.push(match tracer.direct {
             DirectStrategy::Lights(_) if light_sampling => {
                 "plan: light sampling: on (lights to sample and surfaces that scatter)".into()
