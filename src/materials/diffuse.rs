@@ -6,7 +6,7 @@
 
 use glam::{Vec2, Vec3};
 
-use super::{BsdfSample, Density};
+use super::BsdfSample;
 use crate::math::warp::{cosine_hemisphere_pdf, sample_cosine_hemisphere};
 use crate::math::Rgb;
 
@@ -33,13 +33,7 @@ impl Diffuse {
         }
         let wi = sample_cosine_hemisphere(u);
         let pdf = cosine_hemisphere_pdf(wi);
-        (pdf > 0.0).then(|| BsdfSample {
-            f: self.f(wo, wi),
-            wi,
-            density: Density::SolidAngle(pdf),
-            transmission: false,
-            eta: 1.0,
-        })
+        BsdfSample::reflection(self.f(wo, wi), wi, pdf)
     }
 
     pub fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {

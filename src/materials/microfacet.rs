@@ -31,7 +31,7 @@
 use glam::{Vec2, Vec3};
 
 use super::beckmann::Beckmann;
-use super::{fresnel, BsdfSample, Density, MicrofacetSampling};
+use super::{fresnel, BsdfSample, MicrofacetSampling};
 use crate::math::warp::{cosine_hemisphere_pdf, sample_cosine_hemisphere};
 use crate::math::Rgb;
 
@@ -143,25 +143,16 @@ impl Conductor {
         // Density and value from (wo, wi) alike, so that the weight is
         // exactly the ratio pdf() and f() give for this pair.
         let pdf = self.pdf(wo, wi);
-        (pdf > 0.0).then(|| BsdfSample {
-            f: self.f(wo, wi),
-            wi,
-            density: Density::SolidAngle(pdf),
-            transmission: false,
-            eta: 1.0,
-        })
+        BsdfSample::reflection(self.f(wo, wi), wi, pdf)
     }
 
     /// `wi` cosine-weighted on the hemisphere, whatever the lobe.
     fn sample_cosine(&self, wo: Vec3, u: Vec2) -> Option<BsdfSample> {
         let wi = sample_cosine_hemisphere(u);
         let pdf = cosine_hemisphere_pdf(wi);
-        (wi.z > 0.0 && pdf > 0.0).then(|| BsdfSample {
-            f: self.f(wo, wi),
-            wi,
-            density: Density::SolidAngle(pdf),
-            transmission: false,
-            eta: 1.0,
-        })
+        if wi.z <= 0.0 {
+            return None;
+        }
+        BsdfSample::reflection(self.f(wo, wi), wi, pdf)
     }
 }

@@ -70,6 +70,18 @@ pub struct BsdfSample {
 }
 
 impl BsdfSample {
+    /// A reflection into `wi` drawn with density `pdf` per steradian
+    /// (`None` unless `pdf` is positive and finite).
+    pub fn reflection(f: Rgb, wi: Vec3, pdf: f32) -> Option<Self> {
+        (pdf > 0.0 && pdf.is_finite()).then_some(BsdfSample {
+            f,
+            wi,
+            density: Density::SolidAngle(pdf),
+            transmission: false,
+            eta: 1.0,
+        })
+    }
+
     /// The density per steradian, or the lobe's probability for a delta lobe.
     pub fn pdf(&self) -> f32 {
         match self.density {

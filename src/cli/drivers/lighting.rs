@@ -190,8 +190,10 @@ fn path_tracer(args: &CourseArgs, scene: &Scene) -> PathTracer {
     }
 }
 
-/// `part4-global`: paths up to `-m` bounces with Russian roulette.
-pub fn part4(args: &CourseArgs) -> Result<()> {
+/// Part 4's path tracer as the flags ask, with no adaptive sampling and
+/// no rate image: parts 4, 6, 7 and 8 differ only in their built-in scene
+/// and the flags they document.
+fn render_paths(args: &CourseArgs) -> Result<()> {
     run(args, |scene| {
         Ok(Part {
             tracer: path_tracer(args, scene),
@@ -199,6 +201,11 @@ pub fn part4(args: &CourseArgs) -> Result<()> {
             rate_image: false,
         })
     })
+}
+
+/// `part4-global`: paths up to `-m` bounces with Russian roulette.
+pub fn part4(args: &CourseArgs) -> Result<()> {
+    render_paths(args)
 }
 
 /// `part5-adaptive`: part 4 with adaptive sampling (`-a`, default 32 0.05)
@@ -218,13 +225,7 @@ pub fn part5(args: &CourseArgs) -> Result<()> {
 pub fn part6(args: &CourseArgs) -> Result<()> {
     let mut args = args.clone();
     args.builtin = Builtin::MaterialsBox;
-    run(&args, |scene| {
-        Ok(Part {
-            tracer: path_tracer(&args, scene),
-            adaptive: None,
-            rate_image: false,
-        })
-    })
+    render_paths(&args)
 }
 
 /// `part7-environment`: part 4's path tracer lit by an environment map,
@@ -234,25 +235,13 @@ pub fn part7(args: &CourseArgs) -> Result<()> {
     let mut args = args.clone();
     args.builtin = Builtin::EnvironmentSpheres;
     args.builtin_sky = true;
-    run(&args, |scene| {
-        Ok(Part {
-            tracer: path_tracer(&args, scene),
-            adaptive: None,
-            rate_image: false,
-        })
-    })
+    render_paths(&args)
 }
 
 /// `part8-dof`: part 4's path tracer through a thin lens (`-b`, `-d`,
 /// `--focus-at`).
 pub fn part8(args: &CourseArgs) -> Result<()> {
-    run(args, |scene| {
-        Ok(Part {
-            tracer: path_tracer(args, scene),
-            adaptive: None,
-            rate_image: false,
-        })
-    })
+    render_paths(args)
 }
 
 /// `pathtracer`: parts 1 to 5 with the course's flags; adaptive sampling
