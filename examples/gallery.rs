@@ -124,7 +124,7 @@ fn run(args: &[String]) -> Result<(), Box<dyn Error>> {
     let world = World::with_options(&scene, &accel, course.world_options());
     let tracer = PathTracer {
         direct: direct_strategy(&course, &scene),
-        max_depth: course.max_depth,
+        max_depth: course.max_depth(),
         accumulate: course.accumulate == 1,
         russian_roulette: true,
     };

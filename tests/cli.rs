@@ -56,6 +56,10 @@ fn info_prints_the_three_fixed_lines() {
         camera,
         "camera: position (0.0000, 0.7500, 4.8023) direction (-0.0000, 0.0000, -1.0000) hfov 30.68 vfov 23.25"
     );
+    // Without -r or a scene file the built-in render's size applies: 480 x 360.
+    let (ok, default_size, _) = run(PATHTRACER, &["--info"]);
+    assert!(ok);
+    assert!(default_size.lines().any(|l| l == camera), "{default_size}");
 }
 
 #[test]

@@ -184,7 +184,7 @@ pub fn part3(args: &CourseArgs) -> Result<()> {
 fn path_tracer(args: &CourseArgs, scene: &Scene) -> PathTracer {
     PathTracer {
         direct: direct_strategy(args, scene),
-        max_depth: args.max_depth,
+        max_depth: args.max_depth(),
         accumulate: args.accumulate == 1,
         russian_roulette: true,
     }
