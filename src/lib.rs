@@ -12,11 +12,11 @@
 //! | 4 global illumination | [`global`] (path tracing, Russian roulette) | `part4-global` | `docs/05-global.md` |
 //! | 5 adaptive sampling | [`adaptive`] | `part5-adaptive` | `docs/06-adaptive.md` |
 //! | 3-2 mirror, glass, microfacet | [`materials`] (BSDFs, Fresnel, Beckmann) | `part6-materials` | `docs/07-materials.md` |
-//! | 3-2 environment light | [`environment`] (lat-long map, its sampling) | `part7-environment` | `docs/08-environment.md` |
+//! | 3-2 environment light | [`environment`] (lat-long map, its sampling), [`math::distribution`] | `part7-environment` | `docs/08-environment.md` |
 //! | 3-2 depth of field | [`depth_of_field`] (thin lens) | `part8-dof` | `docs/09-depth-of-field.md` |
 //!
 //! Support modules: [`math`] (colours, frames, warps, MIS weights,
-//! floating-point helpers), [`lights`] (the light set every part samples:
+//! piecewise-constant distributions, floating-point helpers), [`lights`] (the light set every part samples:
 //! one interface for every kind of light, built once per render),
 //! [`world`] (the scene as the renderer sees it: intersector, shading
 //! points, which light a surface belongs to), [`plan`] (which effects a

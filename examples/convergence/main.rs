@@ -1,6 +1,6 @@
-//! Convergence studies of parts 3 to 6: error against time, as PNG charts
+//! Convergence studies of parts 3 to 7: error against time, as PNG charts
 //! and Markdown tables (docs/04-direct.md, 05-global.md, 06-adaptive.md,
-//! 07-materials.md).
+//! 07-materials.md, 08-environment.md).
 //!
 //! ```text
 //! cargo run --release --example convergence -- STUDY [--out DIR] [--scenes DIR] [-t N] [-r W H]
@@ -10,7 +10,9 @@
 //! `-l`), `global` (max depth, Russian roulette), `adaptive` (adaptive vs
 //! uniform sampling), `course` (the course's area and point light
 //! factors), `materials` (MIS against light or BSDF sampling alone, and
-//! the microfacet samplers, on glossy spheres) or `all`. Charts go to `--out` (default `docs/images`), tables
+//! the microfacet samplers, on glossy spheres), `environment` (importance
+//! against uniform sampling of the built-in sky, with and without MIS, on
+//! `bunny_unlit.dae`) or `all`. Charts go to `--out` (default `docs/images`), tables
 //! to stdout, progress to stderr. The course's scenes are found by name
 //! under `--scenes DIR`, by default under `$CS184_SCENES` (the course
 //! starter's `dae/` folder; see `pathtracer::scene::course_files`). Images are 160 x 120 (`-r`) with
@@ -31,7 +33,8 @@ use std::process::ExitCode;
 
 use studies::Options;
 
-const USAGE: &str = "usage: convergence direct|samples|global|adaptive|course|materials|all \
+const USAGE: &str =
+    "usage: convergence direct|samples|global|adaptive|course|materials|environment|all \
                      [--out DIR] [--scenes DIR] [-t N] [-r W H]";
 
 fn parse(args: &[String]) -> Result<(String, Options), Box<dyn Error>> {
@@ -75,6 +78,7 @@ fn run(study: &str, options: &Options) -> Result<(), Box<dyn Error>> {
         "adaptive" => studies::adaptive(options),
         "course" => studies::course(options),
         "materials" => studies::materials(options),
+        "environment" => studies::environment(options),
         "all" => [
             "direct",
             "samples",
@@ -82,6 +86,7 @@ fn run(study: &str, options: &Options) -> Result<(), Box<dyn Error>> {
             "adaptive",
             "course",
             "materials",
+            "environment",
         ]
         .iter()
         .try_for_each(|s| run(s, options)),

@@ -14,10 +14,11 @@
 //! e = sqrt( 1/P sum_i (Y_i - R_i)^2  -  1/P sum_i SE_R,i^2 ) / (1/P sum_i R_i)
 //! ```
 //!
-//! Pixels where any of 8 x 8 sub-pixel rays hits an emissive surface are
-//! left out: the edge of a light ten times brighter than the walls makes
-//! their variance (the camera's sampling of the pixel area, the same for
-//! every lighting estimator) outweigh the rest of the image.
+//! Pixels where any of 8 x 8 sub-pixel rays hits an emissive surface (or,
+//! lit by an environment map, escapes and sees the map) are left out: the
+//! edge of a light ten times brighter than the walls makes their variance
+//! (the camera's sampling of the pixel area, the same for every lighting
+//! estimator) outweigh the rest of the image.
 //!
 //! `E (Y_i - R_i)^2 = Var Y_i + Var R_i + bias_i^2` for independent
 //! renders, so subtracting the reference's own squared standard errors
@@ -31,6 +32,7 @@ use glam::Vec2;
 use pathtracer::adaptive::Adaptive;
 use pathtracer::bvh::BvhAccel;
 use pathtracer::cli::drivers::render_lighting;
+use pathtracer::environment::EnvironmentLight;
 use pathtracer::global::PathTracer;
 use pathtracer::intersect::Primitives;
 use pathtracer::math::luminance;
@@ -51,6 +53,8 @@ pub struct Setup {
     pub width: u32,
     pub height: u32,
     pub threads: Option<usize>,
+    /// The environment light of every render (`-e`), if any.
+    pub environment: Option<EnvironmentLight>,
 }
 
 impl Setup {
@@ -86,10 +90,12 @@ impl Setup {
             width,
             height,
             threads,
+            environment: None,
         })
     }
 
-    /// Per pixel, whether none of 8 x 8 sub-pixel rays sees an emitter.
+    /// Per pixel, whether none of 8 x 8 sub-pixel rays sees an emitter
+    /// (with an environment light, escaping counts as seeing one).
     pub fn emitter_free_pixels(&self) -> Vec<bool> {
         let scene = World::new(&self.scene, &self.accel);
         let (w, h) = (self.width, self.height);
@@ -97,9 +103,11 @@ impl Setup {
             (0..64).any(|k| {
                 let offset = Vec2::new((k % 8) as f32 + 0.5, (k / 8) as f32 + 0.5) / 8.0;
                 let ray = pixel_ray(&self.camera, (w, h), (x, y), offset, Vec2::splat(0.5));
-                scene
-                    .trace(&ray)
-                    .is_some_and(|p| p.emission != pathtracer::math::Rgb::ZERO)
+                match scene.trace(&ray) {
+                    Some(p) => p.emission != pathtracer::math::Rgb::ZERO,
+                    // An escaping ray sees the environment map, if any.
+                    None => self.environment.is_some(),
+                }
             })
         };
         (0..h)
@@ -156,7 +164,8 @@ impl Setup {
         adaptive: Option<Adaptive>,
         seed: u64,
     ) -> Rendered {
-        let scene = World::with_options(&self.scene, &self.accel, options);
+        let scene = World::with_options(&self.scene, &self.accel, options)
+            .with_environment(self.environment.clone());
         let settings = self.settings(samples_per_pixel, seed);
         render_lighting(&scene, tracer, &self.camera, &settings, adaptive)
     }
