@@ -68,7 +68,8 @@ impl Setup {
         })?;
         let scene = pathtracer::scene::load(&path)?;
         let primitives = Primitives::from_scene(&scene);
-        let camera = Camera::course_placement(&scene.camera, &primitives.bounds(), FRAME.0, FRAME.1);
+        let camera =
+            Camera::course_placement(&scene.camera, &primitives.bounds(), FRAME.0, FRAME.1);
         Ok(Setup {
             name: file.to_string(),
             scene,
@@ -251,7 +252,12 @@ fn images() -> PathBuf {
 /// Möller-Trumbore, as `part1-raygen` renders it.
 fn part1(threads: usize) -> Result<()> {
     let mut pictures = Vec::new();
-    for file in ["CBempty.dae", "CBspheres_lambertian.dae", "cube.dae", "plane.dae"] {
+    for file in [
+        "CBempty.dae",
+        "CBspheres_lambertian.dae",
+        "cube.dae",
+        "plane.dae",
+    ] {
         let setup = Setup::load(file, threads)?;
         let mut primitives = setup.accel.primitives.clone();
         primitives.triangle_test = TriangleTest::MollerTrumbore;
@@ -302,10 +308,7 @@ fn part2(threads: usize) -> Result<()> {
     let mut pictures = Vec::new();
     for depth in [1, 3, 5, 8] {
         let boxes = boxes_at_depth(&setup.accel, depth);
-        let mut picture = Picture::of(
-            format!("depth {depth}: {} boxes", boxes.len()),
-            &shaded,
-        );
+        let mut picture = Picture::of(format!("depth {depth}: {} boxes", boxes.len()), &shaded);
         // Dim the mesh so the boxes stand out.
         picture.display.iter_mut().for_each(|p| *p *= 0.6);
         for (i, b) in boxes.iter().enumerate() {
@@ -512,7 +515,11 @@ fn run(args: &[String]) -> Result<()> {
         match arg.as_str() {
             "-t" => threads = it.next().ok_or("-t needs a value")?.parse()?,
             "part1" | "part2" | "part3" | "part4" | "part5" => parts.push(arg.clone()),
-            other => return Err(format!("unexpected argument {other}; expected part1 .. part5 [-t N]").into()),
+            other => {
+                return Err(
+                    format!("unexpected argument {other}; expected part1 .. part5 [-t N]").into(),
+                )
+            }
         }
     }
     if parts.is_empty() {
