@@ -498,11 +498,9 @@ fn part5(threads: usize) -> Result<()> {
         let setup = Setup::load(file, threads)?;
         let r = setup.render(&paths(4, 5, true), spp, Some(Adaptive::default()), 60);
         let short = file.trim_end_matches(".dae");
-        pictures.push(Picture::of(
-            format!("{short}: mean {:.0} spp", r.mean_samples_per_pixel()),
-            &r,
-        ));
-        pictures.push(Picture::rate("sample rate", &r, spp));
+        pictures.push(Picture::of(short, &r));
+        let mean = r.mean_samples_per_pixel();
+        pictures.push(Picture::rate(format!("rate: mean {mean:.0} spp"), &r, spp));
     }
     grid("w31-part5-adaptive.png", 4, &pictures)
 }
