@@ -17,9 +17,11 @@
 //! binaries run: the same loader, BVH, plan ([`Plan::specialise`]),
 //! path tracer and tone map.
 
+#[path = "support/font.rs"]
+mod font;
+
 use std::error::Error;
 use std::path::{Path, PathBuf};
-use std::sync::Once;
 use std::time::Instant;
 
 use pathtracer::adaptive::{rate_colour, Adaptive};
@@ -36,7 +38,6 @@ use pathtracer::render::{tone_map, write_png, RenderSettings, Rendered};
 use pathtracer::scene::{course_files, Scene};
 use pathtracer::world::World;
 use plotters::prelude::*;
-use plotters::style::FontStyle;
 
 type Result<T> = std::result::Result<T, Box<dyn Error>>;
 
@@ -187,24 +188,10 @@ impl Picture {
     }
 }
 
-fn register_font() -> Result<()> {
-    static ONCE: Once = Once::new();
-    let mut result = Ok(());
-    ONCE.call_once(|| {
-        result = plotters::style::register_font(
-            "sans-serif",
-            FontStyle::Normal,
-            dejavu::sans::regular(),
-        )
-        .map_err(|_| "DejaVu Sans did not load".into());
-    });
-    result
-}
-
 /// Writes `pictures` (all one size) as a grid of `columns`, each with its
 /// label above it, to `docs/images/NAME`.
 fn grid(name: &str, columns: usize, pictures: &[Picture]) -> Result<()> {
-    register_font()?;
+    font::register_font()?;
     let (w, h) = (pictures[0].width, pictures[0].height);
     let gap = 4;
     let cols = columns.min(pictures.len()) as u32;

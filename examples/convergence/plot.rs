@@ -7,9 +7,11 @@
 //! is drawn into a buffer and saved with the `image` crate the library
 //! already uses.
 
+#[path = "../support/font.rs"]
+mod font;
+
 use std::error::Error;
 use std::path::Path;
-use std::sync::Once;
 
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::prelude::*;
@@ -50,23 +52,9 @@ const COLOURS: [RGBColor; 6] = [
     RGBColor(230, 159, 0),
 ];
 
-fn register_font() -> Result<(), Box<dyn Error>> {
-    static ONCE: Once = Once::new();
-    let mut result = Ok(());
-    ONCE.call_once(|| {
-        result = plotters::style::register_font(
-            "sans-serif",
-            FontStyle::Normal,
-            dejavu::sans::regular(),
-        )
-        .map_err(|_| "DejaVu Sans did not load".into());
-    });
-    result
-}
-
 /// Draws `chart` and writes it to `path` as PNG.
 pub fn line_chart(chart: &Chart, path: &Path) -> Result<(), Box<dyn Error>> {
-    register_font()?;
+    font::register_font()?;
     let all = || chart.series.iter().flat_map(|s| s.points.iter());
     let span = |values: Vec<f64>, log: bool| {
         let lo = values.iter().copied().fold(f64::INFINITY, f64::min);

@@ -8,9 +8,12 @@ use clap::Parser;
 use crate::adaptive::Adaptive;
 use crate::depth_of_field::{ThinLens, COURSE_FOCAL_DISTANCE};
 use crate::lights::LightConvention;
-use crate::materials::{BsdfOptions, FresnelModel, MicrofacetSampling};
+use crate::materials::{BsdfOptions, FresnelModel};
+
+use super::values::{non_negative, positive};
+pub use super::values::{Builtin, MicrofacetSamplingArg};
 use crate::render::RenderSettings;
-use crate::scene::{builtin, Scene, SceneError};
+use crate::scene::{Scene, SceneError};
 use crate::world::WorldOptions;
 
 /// Largest accepted image side, pixels.
@@ -179,77 +182,6 @@ pub struct CourseArgs {
     pub seed: u64,
 }
 
-/// A finite number `>= 0`.
-fn non_negative(s: &str) -> Result<f32, String> {
-    match s.parse::<f32>() {
-        Ok(v) if v.is_finite() && v >= 0.0 => Ok(v),
-        _ => Err(format!("expected a finite number of at least 0, not {s}")),
-    }
-}
-
-/// A finite number `> 0`.
-fn positive(s: &str) -> Result<f32, String> {
-    match s.parse::<f32>() {
-        Ok(v) if v.is_finite() && v > 0.0 => Ok(v),
-        _ => Err(format!("expected a finite positive number, not {s}")),
-    }
-}
-
-/// `--microfacet-sampling`: the command line's names of
-/// [`MicrofacetSampling`] (kept here so that the library needs no clap).
-#[derive(clap::ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum MicrofacetSamplingArg {
-    /// `wi` cosine-weighted on the hemisphere.
-    Cosine,
-    /// The Beckmann half vector from `D(h) cos(theta_h)` (the course's).
-    HalfVector,
-    /// The normals visible from `wo` (Heitz and d'Eon 2014).
-    #[default]
-    VisibleNormals,
-}
-
-impl From<MicrofacetSamplingArg> for MicrofacetSampling {
-    fn from(arg: MicrofacetSamplingArg) -> Self {
-        match arg {
-            MicrofacetSamplingArg::Cosine => MicrofacetSampling::CosineHemisphere,
-            MicrofacetSamplingArg::HalfVector => MicrofacetSampling::HalfVector,
-            MicrofacetSamplingArg::VisibleNormals => MicrofacetSampling::VisibleNormals,
-        }
-    }
-}
-
-/// The built-in scenes a binary renders when no scene file is given.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Builtin {
-    /// [`builtin::cornell_box`]: diffuse spheres (parts 1 to 5).
-    #[default]
-    CornellBox,
-    /// [`builtin::materials_box`]: mirror, glass and copper (part 6).
-    MaterialsBox,
-    /// [`builtin::environment_spheres`]: two spheres on a floor, no
-    /// light of their own (part 7).
-    EnvironmentSpheres,
-}
-
-impl Builtin {
-    pub fn scene(self) -> Scene {
-        match self {
-            Builtin::CornellBox => builtin::cornell_box(),
-            Builtin::MaterialsBox => builtin::materials_box(),
-            Builtin::EnvironmentSpheres => builtin::environment_spheres(),
-        }
-    }
-
-    /// The file name stem of its default output.
-    pub fn name(self) -> &'static str {
-        match self {
-            Builtin::CornellBox => "cornell-box",
-            Builtin::MaterialsBox => "materials-box",
-            Builtin::EnvironmentSpheres => "environment-spheres",
-        }
-    }
-}
-
 /// `part2-bvh`'s flags: the course's, plus the benchmarks.
 #[derive(Parser, Clone, Debug, PartialEq)]
 #[command(version, about, args_override_self = true)]
@@ -389,6 +321,7 @@ impl CourseArgs {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::materials::MicrofacetSampling;
 
     #[test]
     fn course_flags_parse() {

@@ -33,6 +33,7 @@ pub mod point;
 pub mod rect;
 pub mod sample;
 pub mod set;
+pub mod stand_ins;
 pub mod triangles;
 
 pub use convention::LightConvention;
@@ -41,6 +42,7 @@ pub use point::{PointLight, SpotLight};
 pub use rect::RectLight;
 pub use sample::{LightPdf, LightSample, SurfacePoint};
 pub use set::{EmitterRole, LightSet};
+pub use stand_ins::StandIns;
 pub use triangles::EmissiveTriangles;
 
 use glam::{Vec2, Vec3};

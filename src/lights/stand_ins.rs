@@ -1,0 +1,102 @@
+//! Which emissive surfaces stand in for an area light.
+//!
+//! The course's Cornell boxes hold an area light and, at the same place,
+//! an emissive `light` mesh of the same radiance: the light lights the
+//! scene, the mesh shows it to the camera and through delta bounces. An
+//! emissive triangle shows an area light when it has the light's radiance,
+//! each corner lies within 0.55 of the light's diagonal from its centre,
+//! and on the light's plane or up to 1 % of the diagonal behind it (never
+//! in front, where it would shadow the light). See [`super::set`] for how
+//! the light set counts them.
+
+use crate::math::Rgb;
+use crate::scene::{Light as SceneLight, Material, Scene};
+
+/// Which emissive surfaces stand in for an area light (see the module
+/// docs): per material, whether it is a stand-in; per scene light, whether
+/// some stand-in shows it; per triangle, the light it shows. A material is
+/// a stand-in when each of its triangles shows some light (not
+/// necessarily the same: two lamps may share one material). Spheres are
+/// never stand-ins, and a material no primitive uses is not one.
+pub struct StandIns {
+    pub materials: Vec<bool>,
+    pub lights: Vec<bool>,
+    /// The light each triangle shows, if any (whatever its material).
+    pub triangle_light: Vec<Option<u32>>,
+}
+
+impl StandIns {
+    pub fn of(scene: &Scene) -> Self {
+        let mut proxy: Vec<bool> = scene
+            .materials
+            .iter()
+            .map(|m| matches!(m, Material::Emission { .. }))
+            .collect();
+        let mut used = vec![false; scene.materials.len()];
+        let mut triangle_light = Vec::with_capacity(scene.mesh.triangles.len());
+        for (corners, &material) in scene.mesh.triangles.iter().zip(&scene.mesh.materials) {
+            let m = material as usize;
+            if let Some(u) = used.get_mut(m) {
+                *u = true;
+            }
+            let shown = match scene.materials.get(m) {
+                Some(&Material::Emission { radiance }) => scene
+                    .lights
+                    .iter()
+                    .position(|light| shows(scene, corners, radiance, light))
+                    .map(|l| l as u32),
+                _ => None,
+            };
+            if shown.is_none() {
+                if let Some(p) = proxy.get_mut(m) {
+                    *p = false;
+                }
+            }
+            triangle_light.push(shown);
+        }
+        for sphere in &scene.spheres {
+            if let Some(p) = proxy.get_mut(sphere.material as usize) {
+                *p = false;
+            }
+        }
+        let materials: Vec<bool> = proxy.iter().zip(&used).map(|(&p, &u)| p && u).collect();
+        let mut lights = vec![false; scene.lights.len()];
+        for (&light, &m) in triangle_light.iter().zip(&scene.mesh.materials) {
+            if let (Some(l), Some(true)) = (light, materials.get(m as usize)) {
+                lights[l as usize] = true;
+            }
+        }
+        StandIns {
+            materials,
+            lights,
+            triangle_light,
+        }
+    }
+}
+
+/// Whether a triangle of emitted `radiance` lies on the area light `light`
+/// with the same radiance: each corner within 0.55 of the light's diagonal
+/// from its centre, and on the light's plane or behind it (up to 1 % of
+/// the diagonal; not in front, where it would block the light's shadow
+/// rays while BSDF rays that hit it count the light).
+fn shows(scene: &Scene, corners: &[u32; 3], radiance: Rgb, light: &SceneLight) -> bool {
+    let SceneLight::Area {
+        radiance: light_radiance,
+        center,
+        direction,
+        dim_x,
+        dim_y,
+    } = *light
+    else {
+        return false;
+    };
+    let diagonal = (dim_x + dim_y).length().max((dim_x - dim_y).length());
+    light_radiance == radiance
+        && corners.iter().all(|&v| {
+            let q = scene.mesh.positions[v as usize] - center;
+            let in_front = q.dot(direction);
+            q.length() <= 0.55 * diagonal
+                && in_front <= 1e-4 * diagonal
+                && in_front >= -0.01 * diagonal
+        })
+}
