@@ -68,6 +68,20 @@ pub fn line_chart(chart: &Chart, path: &Path) -> Result<(), Box<dyn Error>> {
     };
     let (x0, x1) = span(all().map(|p| p.0).collect(), chart.log_x);
     let (y0, y1) = span(all().map(|p| p.1).collect(), chart.log_y);
+    // On log-log axes, a guide of slope -1/2 through the first point: the
+    // error of an unbiased Monte Carlo estimator falls as 1 / sqrt(N), so
+    // as 1 / sqrt(time) at a fixed cost per sample.
+    let guide = (chart.log_x && chart.log_y)
+        .then(|| chart.series.first().and_then(|s| s.points.first().copied()))
+        .flatten()
+        .map(|(px, py)| {
+            (0..=40)
+                .map(|i| x0 * (x1 / x0).powf(i as f64 / 40.0))
+                .map(|x| (x, py * (px / x).sqrt()))
+                .filter(|&(_, y)| y >= y0 && y <= y1)
+                .collect::<Vec<_>>()
+        });
+    let corner = emptiest_corner(chart, (x0, x1), (y0, y1));
     let mut buffer = vec![255u8; (SIZE.0 * SIZE.1 * 3) as usize];
     let (kx, ky) = (one_two_five(x0, x1), one_two_five(y0, y1));
     let (lx, ly) = ((x0..x1).log_scale(), (y0..y1).log_scale());
@@ -76,12 +90,22 @@ pub fn line_chart(chart: &Chart, path: &Path) -> Result<(), Box<dyn Error>> {
         (true, true) => draw(
             chart,
             buffer_,
-            lx.with_key_points(kx),
-            ly.with_key_points(ky),
+            (lx.with_key_points(kx), ly.with_key_points(ky)),
+            (&guide, corner),
         )?,
-        (true, false) => draw(chart, buffer_, lx.with_key_points(kx), y0..y1)?,
-        (false, true) => draw(chart, buffer_, x0..x1, ly.with_key_points(ky))?,
-        (false, false) => draw(chart, buffer_, x0..x1, y0..y1)?,
+        (true, false) => draw(
+            chart,
+            buffer_,
+            (lx.with_key_points(kx), y0..y1),
+            (&guide, corner),
+        )?,
+        (false, true) => draw(
+            chart,
+            buffer_,
+            (x0..x1, ly.with_key_points(ky)),
+            (&guide, corner),
+        )?,
+        (false, false) => draw(chart, buffer_, (x0..x1, y0..y1), (&guide, corner))?,
     }
     let image = image::RgbImage::from_raw(SIZE.0, SIZE.1, buffer).ok_or("chart buffer size")?;
     image.save(path)?;
@@ -110,7 +134,49 @@ fn tick(v: &f64) -> String {
     }
 }
 
-fn draw<X, Y>(chart: &Chart, buffer: &mut [u8], x: X, y: Y) -> Result<(), Box<dyn Error>>
+/// The corner of the plot with the fewest points near it (in axis
+/// fractions, logarithmic where the axis is), where the legend hides none.
+fn emptiest_corner(chart: &Chart, xs: (f64, f64), ys: (f64, f64)) -> SeriesLabelPosition {
+    let fraction = |v: f64, (lo, hi): (f64, f64), log: bool| {
+        if log {
+            (v / lo).ln() / (hi / lo).ln()
+        } else {
+            (v - lo) / (hi - lo)
+        }
+    };
+    let corners = [
+        (SeriesLabelPosition::UpperRight, true, true),
+        (SeriesLabelPosition::UpperLeft, false, true),
+        (SeriesLabelPosition::LowerLeft, false, false),
+        (SeriesLabelPosition::LowerRight, true, false),
+    ];
+    let crowding = |right: bool, upper: bool| {
+        chart
+            .series
+            .iter()
+            .flat_map(|s| s.points.iter())
+            .filter(|&&(x, y)| {
+                let fx = fraction(x, xs, chart.log_x);
+                let fy = fraction(y, ys, chart.log_y);
+                (if right { fx > 0.55 } else { fx < 0.45 })
+                    && (if upper { fy > 0.6 } else { fy < 0.4 })
+            })
+            .count()
+    };
+    corners
+        .into_iter()
+        .min_by_key(|&(_, right, upper)| crowding(right, upper))
+        .map_or(SeriesLabelPosition::UpperRight, |c| c.0)
+}
+
+type Guide = Option<Vec<(f64, f64)>>;
+
+fn draw<X, Y>(
+    chart: &Chart,
+    buffer: &mut [u8],
+    (x, y): (X, Y),
+    (guide, corner): (&Guide, SeriesLabelPosition),
+) -> Result<(), Box<dyn Error>>
 where
     X: AsRangedCoord<Value = f64>,
     Y: AsRangedCoord<Value = f64>,
@@ -151,8 +217,19 @@ where
                 .map(|&p| Circle::new(p, 4, colour.filled())),
         )?;
     }
+    if let Some(points) = guide {
+        let grey = RGBColor(150, 150, 150);
+        plot.draw_series(DashedLineSeries::new(
+            points.iter().copied(),
+            6,
+            5,
+            grey.stroke_width(1),
+        ))?
+        .label("1 / sqrt(time) guide")
+        .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], grey.stroke_width(1)));
+    }
     plot.configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
+        .position(corner)
         .label_font(("sans-serif", 15))
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
