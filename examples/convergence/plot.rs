@@ -70,7 +70,7 @@ pub fn line_chart(chart: &Chart, path: &Path) -> Result<(), Box<dyn Error>> {
     let (y0, y1) = span(all().map(|p| p.1).collect(), chart.log_y);
     // On log-log axes, a guide of slope -1/2 through the first point: the
     // error of an unbiased Monte Carlo estimator falls as 1 / sqrt(N), so
-    // as 1 / sqrt(time) at a fixed cost per sample.
+    // as 1 / sqrt(time) at a fixed cost per sample (x is either).
     let guide = (chart.log_x && chart.log_y)
         .then(|| chart.series.first().and_then(|s| s.points.first().copied()))
         .flatten()
@@ -134,7 +134,7 @@ fn tick(v: &f64) -> String {
     }
 }
 
-/// The corner of the plot with the fewest points near it (in axis
+/// The place (a corner or a side's middle) with the fewest points near it (in axis
 /// fractions, logarithmic where the axis is), where the legend hides none.
 fn emptiest_corner(chart: &Chart, xs: (f64, f64), ys: (f64, f64)) -> SeriesLabelPosition {
     let fraction = |v: f64, (lo, hi): (f64, f64), log: bool| {
@@ -144,13 +144,16 @@ fn emptiest_corner(chart: &Chart, xs: (f64, f64), ys: (f64, f64)) -> SeriesLabel
             (v - lo) / (hi - lo)
         }
     };
-    let corners = [
-        (SeriesLabelPosition::UpperRight, true, true),
-        (SeriesLabelPosition::UpperLeft, false, true),
-        (SeriesLabelPosition::LowerLeft, false, false),
-        (SeriesLabelPosition::LowerRight, true, false),
+    // Each place with the box of axis fractions a legend there covers.
+    let places = [
+        (SeriesLabelPosition::UpperRight, (0.55, 1.0), (0.65, 1.0)),
+        (SeriesLabelPosition::UpperLeft, (0.0, 0.45), (0.65, 1.0)),
+        (SeriesLabelPosition::LowerLeft, (0.0, 0.45), (0.0, 0.35)),
+        (SeriesLabelPosition::LowerRight, (0.55, 1.0), (0.0, 0.35)),
+        (SeriesLabelPosition::MiddleRight, (0.55, 1.0), (0.3, 0.7)),
+        (SeriesLabelPosition::MiddleLeft, (0.0, 0.45), (0.3, 0.7)),
     ];
-    let crowding = |right: bool, upper: bool| {
+    let crowding = |(x0, x1): (f64, f64), (y0, y1): (f64, f64)| {
         chart
             .series
             .iter()
@@ -158,15 +161,14 @@ fn emptiest_corner(chart: &Chart, xs: (f64, f64), ys: (f64, f64)) -> SeriesLabel
             .filter(|&&(x, y)| {
                 let fx = fraction(x, xs, chart.log_x);
                 let fy = fraction(y, ys, chart.log_y);
-                (if right { fx > 0.55 } else { fx < 0.45 })
-                    && (if upper { fy > 0.6 } else { fy < 0.4 })
+                (x0..=x1).contains(&fx) && (y0..=y1).contains(&fy)
             })
             .count()
     };
-    corners
+    places
         .into_iter()
-        .min_by_key(|&(_, right, upper)| crowding(right, upper))
-        .map_or(SeriesLabelPosition::UpperRight, |c| c.0)
+        .min_by_key(|&(_, x, y)| crowding(x, y))
+        .map_or(SeriesLabelPosition::UpperRight, |p| p.0)
 }
 
 type Guide = Option<Vec<(f64, f64)>>;
@@ -225,7 +227,7 @@ where
             5,
             grey.stroke_width(1),
         ))?
-        .label("1 / sqrt(time) guide")
+        .label("slope -1/2 guide (error ~ 1 / sqrt(x))")
         .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], grey.stroke_width(1)));
     }
     plot.configure_series_labels()
