@@ -53,7 +53,7 @@ impl DirectHemisphere {
             let wi_local = sample_uniform_hemisphere(next_2d(rng));
             let wi = point.frame.to_world(wi_local);
             let ray = point.hit.spawn_ray(wi);
-            let next = world.trace(&ray);
+            let next = world.intersector.intersect(&ray);
             let incoming =
                 found_emission(world, &DirectStrategy::BsdfOnly, &ray, next.as_ref(), &from);
             let f = point.bsdf.f(point.wo, wi_local);

@@ -26,11 +26,11 @@
 use glam::Vec3;
 
 use super::DirectStrategy;
-use crate::intersect::{Intersector, Ray};
+use crate::intersect::{Hit, Intersector, Ray};
 use crate::lights::{EmitterRole, LightHit};
 use crate::math::mis::power_heuristic;
 use crate::math::Rgb;
-use crate::world::{ShadingPoint, World};
+use crate::world::World;
 
 /// Where the ray that found the emission started.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -85,7 +85,7 @@ pub fn found_emission<I: Intersector>(
     world: &World<I>,
     direct: &DirectStrategy,
     ray: &Ray,
-    next: Option<&ShadingPoint>,
+    next: Option<&Hit>,
     prev: &PrevVertex,
 ) -> Rgb {
     let lights = &world.lights;
@@ -111,31 +111,31 @@ pub fn found_emission<I: Intersector>(
                 le += light.escaped_radiance(ray.dir) * weight(sampled(i, None));
             }
         }
-        Some(point) if point.emission != Rgb::ZERO => {
-            role = lights.role(point.hit.primitive);
+        Some(hit) => {
+            // The role says whether the surface emits (dark if not).
+            role = lights.role(hit.primitive);
             let emitter = match role {
                 EmitterRole::Dark => None,
                 EmitterRole::Shown { .. } => Some(Emitter::Shown),
                 EmitterRole::Unsampled => Some(Emitter::Unsampled),
                 EmitterRole::Sampled { light, member } => {
                     let at = LightHit {
-                        point: point.hit.p,
+                        point: hit.p,
                         member,
                     };
                     Some(sampled(light as usize, Some(at)))
                 }
             };
             if let Some(emitter) = emitter {
-                le += point.emission * weight(emitter);
+                le += world.material(hit).emission() * weight(emitter);
             }
         }
-        Some(_) => {}
     }
     // Rectangle lights: after the camera or a delta bounce a rectangle
     // shows itself unless a stand-in shows it; after scattering, only the
     // strategies in which BSDF rays find lights count it.
     let after_scattering = matches!(prev, PrevVertex::Scattering { .. });
-    let t_hit = next.map_or(f32::INFINITY, |p| p.hit.t);
+    let t_hit = next.map_or(f32::INFINITY, |h| h.t);
     for (i, rect, has_stand_in) in lights.rects() {
         let wanted = if after_scattering {
             direct.bsdf_rays_find_lights()

@@ -36,7 +36,7 @@ pub use emission::{emission_weight, Emitter, PrevVertex};
 use rand::Rng;
 
 use crate::direct::{DirectHemisphere, DirectLights};
-use crate::intersect::{Intersector, Ray};
+use crate::intersect::{Hit, Intersector, Ray};
 use crate::math::rng::{next_2d, Sampler};
 use crate::math::Rgb;
 use crate::world::{ShadingPoint, World};
@@ -111,15 +111,20 @@ impl PathTracer {
         // Vertices so far: the light the next ray finds has this many bounces.
         let mut bounces = 0;
         loop {
-            let next = world.trace(&ray);
+            let next = world.intersector.intersect(&ray);
             if self.counts(bounces) {
                 l += beta * self.found_emission(world, &ray, next.as_ref(), &prev);
             }
-            let Some(point) = next else {
+            let Some(hit) = next else {
                 return l;
             };
             bounces += 1;
-            if bounces > self.max_depth || point.bsdf.is_black() {
+            if bounces > self.max_depth {
+                return l;
+            }
+            // Shading only where the path goes on (not for the last ray).
+            let point = world.shade(hit, -ray.dir);
+            if point.bsdf.is_black() {
                 return l;
             }
             let estimates_direct = !matches!(self.direct, DirectStrategy::BsdfOnly);
@@ -195,7 +200,7 @@ impl PathTracer {
         &self,
         world: &World<I>,
         ray: &Ray,
-        next: Option<&ShadingPoint>,
+        next: Option<&Hit>,
         prev: &PrevVertex,
     ) -> Rgb {
         emission::found_emission(world, &self.direct, ray, next, prev)

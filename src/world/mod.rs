@@ -7,7 +7,9 @@ pub mod shading_point;
 pub use shading_point::ShadingPoint;
 
 use crate::environment::EnvironmentLight;
-use crate::intersect::{Intersector, Ray};
+use glam::Vec3;
+
+use crate::intersect::{Hit, Intersector, Ray};
 use crate::lights::{LightConvention, LightSet};
 use crate::materials::BsdfOptions;
 use crate::scene::{Material, Scene};
@@ -55,16 +57,20 @@ impl<'a, I: Intersector> World<'a, I> {
     /// The first surface along `ray`, prepared for shading towards the ray's origin.
     pub fn trace(&self, ray: &Ray) -> Option<ShadingPoint> {
         let hit = self.intersector.intersect(ray)?;
-        let material = self
-            .materials
+        Some(self.shade(hit, -ray.dir))
+    }
+
+    /// The material of `hit` (the course's default for an unknown id).
+    pub fn material(&self, hit: &Hit) -> Material {
+        self.materials
             .get(hit.material as usize)
             .copied()
-            .unwrap_or(Material::DEFAULT);
-        Some(ShadingPoint::new(
-            hit,
-            -ray.dir,
-            &material,
-            self.bsdf_options,
-        ))
+            .unwrap_or(Material::DEFAULT)
+    }
+
+    /// `hit` prepared for shading towards the unit direction `wo`.
+    pub fn shade(&self, hit: Hit, wo: Vec3) -> ShadingPoint {
+        let material = self.material(&hit);
+        ShadingPoint::new(hit, wo, &material, self.bsdf_options)
     }
 }
