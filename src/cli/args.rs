@@ -11,7 +11,7 @@ use crate::lights::LightConvention;
 use crate::materials::{BsdfOptions, FresnelModel};
 
 use super::values::{non_negative, positive};
-pub use super::values::{Builtin, MicrofacetSamplingArg};
+pub use super::values::{Builtin, LightChoiceArg, MicrofacetSamplingArg};
 use crate::render::RenderSettings;
 use crate::scene::{Scene, SceneError};
 use crate::world::WorldOptions;
@@ -164,6 +164,12 @@ pub struct CourseArgs {
     #[arg(long)]
     pub env_uniform: bool,
 
+    /// Which lights direct lighting samples at each vertex: `every` light
+    /// with -l samples each (the course's), -l samples in all of lights
+    /// chosen by `power`, or `auto`: every light up to 8, by power beyond.
+    #[arg(long, value_enum, value_name = "CHOICE", default_value_t = LightChoiceArg::Auto)]
+    pub light_choice: LightChoiceArg,
+
     /// Light the scene by the built-in sky when no -e is given (set by the
     /// binary, not a flag).
     #[arg(skip)]
@@ -302,6 +308,7 @@ impl CourseArgs {
                 },
                 microfacet: self.microfacet_sampling.into(),
             },
+            light_choice: self.light_choice.into(),
         }
     }
 

@@ -1,6 +1,8 @@
 //! The values of the course's flags that are more than a number: checked
-//! numbers, the microfacet sampling strategy, and the built-in scenes.
+//! numbers, the microfacet sampling strategy, the light choice, and the
+//! built-in scenes.
 
+use crate::lights::LightChoiceRule;
 use crate::materials::MicrofacetSampling;
 use crate::scene::{builtin, Scene};
 
@@ -39,6 +41,28 @@ impl From<MicrofacetSamplingArg> for MicrofacetSampling {
             MicrofacetSamplingArg::Cosine => MicrofacetSampling::CosineHemisphere,
             MicrofacetSamplingArg::HalfVector => MicrofacetSampling::HalfVector,
             MicrofacetSamplingArg::VisibleNormals => MicrofacetSampling::VisibleNormals,
+        }
+    }
+}
+
+/// `--light-choice`: the command line's names of [`LightChoiceRule`].
+#[derive(clap::ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum LightChoiceArg {
+    /// Every light up to 8 lights, by power beyond.
+    #[default]
+    Auto,
+    /// Every light, -l samples each (the course's).
+    Every,
+    /// -l samples in all, each of one light chosen by its power.
+    Power,
+}
+
+impl From<LightChoiceArg> for LightChoiceRule {
+    fn from(arg: LightChoiceArg) -> Self {
+        match arg {
+            LightChoiceArg::Auto => LightChoiceRule::Auto,
+            LightChoiceArg::Every => LightChoiceRule::EveryLight,
+            LightChoiceArg::Power => LightChoiceRule::ByPower,
         }
     }
 }

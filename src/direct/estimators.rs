@@ -7,7 +7,7 @@ use glam::Vec3;
 use crate::global::emission::{found_emission, PrevVertex};
 use crate::global::DirectStrategy;
 use crate::intersect::Intersector;
-use crate::lights::{Light, LightPdf, LightSample};
+use crate::lights::{LightChoice, LightPdf, LightSample, LightSet, LightStrategy};
 use crate::math::mis::power_heuristic;
 use crate::math::rng::{next_2d, Sampler};
 use crate::math::warp::{sample_uniform_hemisphere, uniform_hemisphere_pdf};
@@ -65,20 +65,26 @@ impl DirectHemisphere {
 
 /// Direct lighting by sampling the lights (light importance sampling).
 ///
-/// For each light, `N` samples (`N = 1` for a delta light, else `-l`),
-/// each with a shadow ray:
+/// Light sample `j` is a direction `wj` towards light `l_j` with density
+/// `p(wj)` per steradian, drawn with probability `P(l_j)`, and a shadow
+/// ray. The lights are chosen as the light set says ([`LightChoice`]):
+/// every light with its own `N_l` samples (`N_l = 1` for a delta light,
+/// else `-l`, and `P = 1`), or `N = -l` samples in all, each of a light
+/// chosen by power:
 ///
 /// ```text
-/// L_o = sum over lights 1/N sum_j w(wj) f(wo, wj) L(wj) V(wj) |cos(theta_j)| / p(wj)
+/// L_o = sum over lights 1/N_l sum_j w(wj) f(wo, wj) L(wj) V(wj) |cos(theta_j)| / p(wj)
+/// L_o = 1/N sum_j w(wj) f(wo, wj) L(wj) V(wj) |cos(theta_j)| / (P(l_j) p(wj))
 /// ```
 ///
-/// For a delta light the sum has a single term, no division by a density
-/// and `w = 1`. Without multiple importance sampling `w = 1`; with it,
-/// `w` is the power heuristic of `N` light samples against the one BSDF
-/// sample the integrator takes at the same point ([`power_heuristic`]).
+/// For a delta light the density is the pmf alone and `w = 1`. Without
+/// multiple importance sampling `w = 1`; with it, `w` is the power
+/// heuristic of the light strategy, density `N P(l) p(w)`, against the one
+/// BSDF sample the integrator takes at the same point ([`power_heuristic`]).
 #[derive(Clone, Copy, Debug)]
 pub struct DirectLights {
-    /// Samples per non-delta light (`-l`).
+    /// Samples per non-delta light, or in all when lights are chosen by
+    /// power (`-l`).
     pub samples_per_light: u32,
     /// Weight light samples against BSDF sampling (off: `--no-mis`, the
     /// course's estimator).
@@ -86,13 +92,11 @@ pub struct DirectLights {
 }
 
 impl DirectLights {
-    /// Samples taken of `light` at each point.
-    pub fn samples_of(&self, light: &Light) -> u32 {
-        if light.is_delta() {
-            1
-        } else {
-            self.samples_per_light.max(1)
-        }
+    /// How the light strategy samples light `index` of `lights`.
+    pub fn strategy(&self, lights: &LightSet, index: usize) -> LightStrategy {
+        lights
+            .choice()
+            .strategy(index, &lights.lights[index], self.samples_per_light)
     }
 
     #[doc(alias = "estimate_direct_lighting_importance")]
@@ -102,30 +106,49 @@ impl DirectLights {
         point: &ShadingPoint,
         rng: &mut Sampler,
     ) -> Rgb {
-        let mut total = Rgb::ZERO;
-        for light in &world.lights.lights {
-            let n = self.samples_of(light);
-            let mut sum = Rgb::ZERO;
-            for _ in 0..n {
-                let uc = rng.gen::<f32>();
-                if let Some(sample) = light.sample_li(point.hit.p, uc, next_2d(rng)) {
-                    sum += self.contribution(world, point, &sample, n);
+        let lights = &world.lights;
+        match lights.choice() {
+            LightChoice::EveryLight => {
+                let mut total = Rgb::ZERO;
+                for (index, light) in lights.lights.iter().enumerate() {
+                    let strategy = self.strategy(lights, index);
+                    let mut sum = Rgb::ZERO;
+                    for _ in 0..strategy.samples {
+                        let uc = rng.gen::<f32>();
+                        if let Some(sample) = light.sample_li(point.hit.p, uc, next_2d(rng)) {
+                            sum += self.contribution(world, point, &sample, strategy);
+                        }
+                    }
+                    total += sum / strategy.samples as f32;
                 }
+                total
             }
-            total += sum / n as f32;
+            LightChoice::ByPower(pmf) => {
+                let n = self.samples_per_light.max(1);
+                let mut sum = Rgb::ZERO;
+                for _ in 0..n {
+                    let index = pmf.sample(rng.gen::<f32>()).cell;
+                    let strategy = self.strategy(lights, index);
+                    let uc = rng.gen::<f32>();
+                    let light = &lights.lights[index];
+                    if let Some(sample) = light.sample_li(point.hit.p, uc, next_2d(rng)) {
+                        sum += self.contribution(world, point, &sample, strategy);
+                    }
+                }
+                sum / n as f32
+            }
         }
-        total
     }
 
-    /// One light sample's term `w f L |cos| / p` (`f L |cos|` for a delta
-    /// light), or zero when the BSDF does not scatter that way or a shadow
-    /// ray finds the light blocked.
+    /// One light sample's term `w f L |cos| / (P p)` (`f L |cos| / P` for
+    /// a delta light), or zero when the BSDF does not scatter that way or
+    /// a shadow ray finds the light blocked.
     fn contribution<I: Intersector>(
         &self,
         world: &World<I>,
         point: &ShadingPoint,
         sample: &LightSample,
-        n: u32,
+        strategy: LightStrategy,
     ) -> Rgb {
         let wi_local = point.frame.to_local(sample.wi);
         let f = point.bsdf.f(point.wo, wi_local);
@@ -142,13 +165,15 @@ impl DirectLights {
         if world.intersector.occluded(&shadow) {
             return Rgb::ZERO;
         }
+        let chosen = strategy.probability;
         let weight = match sample.pdf {
-            LightPdf::Delta => 1.0,
+            LightPdf::Delta => 1.0 / chosen,
             LightPdf::SolidAngle(pdf) if self.mis => {
                 let bsdf_pdf = point.bsdf.pdf(point.wo, wi_local);
-                power_heuristic(n as f32, pdf, 1.0, bsdf_pdf) / pdf
+                let light_pdf = chosen * pdf;
+                power_heuristic(strategy.samples as f32, light_pdf, 1.0, bsdf_pdf) / light_pdf
             }
-            LightPdf::SolidAngle(pdf) => 1.0 / pdf,
+            LightPdf::SolidAngle(pdf) => 1.0 / (chosen * pdf),
         };
         f * sample.radiance * wi_local.z.abs() * weight
     }

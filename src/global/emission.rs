@@ -47,8 +47,9 @@ pub enum PrevVertex {
 pub enum Emitter {
     /// Shown to the camera and through delta bounces only.
     Shown,
-    /// Sampled by a light that takes `samples` samples per vertex and would
-    /// have chosen this direction with density `light_pdf` per steradian.
+    /// Sampled by the light strategy, which takes `samples` samples per
+    /// vertex and would have chosen this direction with density `light_pdf`
+    /// per steradian (times the probability of choosing this light).
     Sampled { light_pdf: f32, samples: u32 },
     /// Sampled by no light.
     Unsampled,
@@ -92,9 +93,10 @@ pub fn found_emission<I: Intersector>(
     // What light sampling at `prev` would have done for `light`.
     let sampled = |light: usize, hit: Option<LightHit>| match (direct, *prev) {
         (DirectStrategy::Lights(d), PrevVertex::Scattering { p, .. }) if d.mis => {
+            let strategy = d.strategy(lights, light);
             Emitter::Sampled {
-                light_pdf: lights.lights[light].pdf_li(p, ray.dir, hit),
-                samples: d.samples_of(&lights.lights[light]),
+                light_pdf: strategy.probability * lights.lights[light].pdf_li(p, ray.dir, hit),
+                samples: strategy.samples,
             }
         }
         _ => Emitter::Sampled {

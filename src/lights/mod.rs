@@ -11,7 +11,7 @@
 //! - [`Light::escaped_radiance`]: the radiance a ray that escapes the scene
 //!   sees (lights at infinity);
 //! - [`Light::power`]: the radiant power (`--info` prints it in the
-//!   plan; a sampler choosing among many lights by power would use it).
+//!   plan; [`LightChoice::ByPower`] picks lights in proportion to it).
 //!
 //! | kind | file | sampled by |
 //! | --- | --- | --- |
@@ -27,6 +27,7 @@
 //! densities of surfaces become solid-angle ones in one place,
 //! [`SurfacePoint::seen_from`].
 
+pub mod choice;
 pub mod convention;
 pub mod distant;
 pub mod point;
@@ -36,6 +37,7 @@ pub mod set;
 pub mod stand_ins;
 pub mod triangles;
 
+pub use choice::{LightChoice, LightChoiceRule, LightStrategy, MANY_LIGHTS};
 pub use convention::LightConvention;
 pub use distant::{AmbientSky, DirectionalLight};
 pub use point::{PointLight, SpotLight};

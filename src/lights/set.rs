@@ -25,7 +25,7 @@
 use glam::Vec3;
 
 use super::stand_ins::StandIns;
-use super::{EmissiveTriangles, Light, LightConvention, RectLight};
+use super::{EmissiveTriangles, Light, LightChoice, LightChoiceRule, LightConvention, RectLight};
 use crate::environment::EnvironmentLight;
 use crate::math::Rgb;
 use crate::scene::Scene;
@@ -60,6 +60,9 @@ pub struct LightSet {
     infinite: Vec<usize>,
     has_unsampled: bool,
     scene_radius: f32,
+    /// Which lights direct lighting samples, as asked for and as decided.
+    choice_rule: LightChoiceRule,
+    choice: LightChoice,
 }
 
 impl LightSet {
@@ -130,7 +133,22 @@ impl LightSet {
             roles,
             scene_radius: scene_radius(scene),
             lights,
+            choice_rule: LightChoiceRule::default(),
+            choice: LightChoice::default(),
         }
+        .with_choice(LightChoiceRule::default())
+    }
+
+    /// The same set with its lights chosen by `rule` ([`LightChoice`]).
+    pub fn with_choice(mut self, rule: LightChoiceRule) -> Self {
+        self.choice_rule = rule;
+        self.choice = LightChoice::new(rule, &self.lights, self.scene_radius);
+        self
+    }
+
+    /// How direct lighting chooses the lights it samples.
+    pub fn choice(&self) -> &LightChoice {
+        &self.choice
     }
 
     /// The same set with the environment light `environment` added, at
@@ -138,7 +156,8 @@ impl LightSet {
     pub fn with_environment(mut self, environment: EnvironmentLight) -> Self {
         self.infinite.push(self.lights.len());
         self.lights.push(Light::Environment(environment));
-        self
+        let rule = self.choice_rule;
+        self.with_choice(rule)
     }
 
     /// How the emission of primitive `primitive` is counted.

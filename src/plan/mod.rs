@@ -138,9 +138,11 @@ impl Plan {
             ));
         }
         lines.push(match tracer.direct {
-            DirectStrategy::Lights(_) if light_sampling => {
-                "plan: light sampling: on (lights to sample and surfaces that scatter)".into()
-            }
+            DirectStrategy::Lights(_) if light_sampling => format!(
+                "plan: light sampling: on (lights to sample and surfaces that scatter): {} lights, {}",
+                lights.lights.len(),
+                lights.choice().describe()
+            ),
             DirectStrategy::Lights(_) => {
                 "plan: light sampling: off (no light to sample or no surface that scatters non-delta)"
                     .into()

@@ -10,7 +10,7 @@ use crate::environment::EnvironmentLight;
 use glam::Vec3;
 
 use crate::intersect::{Hit, Intersector, Ray};
-use crate::lights::{LightConvention, LightSet};
+use crate::lights::{LightChoiceRule, LightConvention, LightSet};
 use crate::materials::BsdfOptions;
 use crate::scene::{Material, Scene};
 
@@ -21,6 +21,8 @@ pub struct WorldOptions {
     pub light_convention: LightConvention,
     /// Fresnel model and microfacet sampling for every BSDF.
     pub bsdf: BsdfOptions,
+    /// Which lights direct lighting samples (`--light-choice`).
+    pub light_choice: LightChoiceRule,
 }
 
 /// A scene ready to be traced: intersector, materials and lights.
@@ -41,7 +43,8 @@ impl<'a, I: Intersector> World<'a, I> {
         World {
             intersector,
             materials: &scene.materials,
-            lights: LightSet::new(scene, options.light_convention),
+            lights: LightSet::new(scene, options.light_convention)
+                .with_choice(options.light_choice),
             bsdf_options: options.bsdf,
         }
     }
