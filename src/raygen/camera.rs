@@ -64,6 +64,17 @@ pub struct Camera {
     pub zfar: f32,
     /// The lens (part 8); a pinhole by default.
     pub lens: ThinLens,
+    /// `(tan(hFov / 2), tan(vFov / 2))`, computed once by the constructors
+    /// (every camera ray needs them; the fields of view are fixed there).
+    tan_half_fov: Vec2,
+}
+
+/// `(tan(hFov / 2), tan(vFov / 2))` of fields of view in degrees.
+fn tan_half_fov(hfov_deg: f32, vfov_deg: f32) -> Vec2 {
+    Vec2::new(
+        (0.5 * hfov_deg.to_radians()).tan(),
+        (0.5 * vfov_deg.to_radians()).tan(),
+    )
 }
 
 impl Camera {
@@ -80,6 +91,7 @@ impl Camera {
             znear: 0.0,
             zfar: f32::INFINITY,
             lens: ThinLens::PINHOLE,
+            tan_half_fov: tan_half_fov(hfov_deg, vfov_deg),
         }
     }
 
@@ -114,6 +126,7 @@ impl Camera {
             znear: info.znear,
             zfar: info.zfar,
             lens: ThinLens::PINHOLE,
+            tan_half_fov: tan_half_fov(hfov_deg, vfov_deg),
         }
     }
 
@@ -125,9 +138,8 @@ impl Camera {
     /// The pinhole direction through the normalised image point `(x, y)`,
     /// camera space, with `z = -1`.
     fn film_direction(&self, x: f32, y: f32) -> Vec3 {
-        let tan_h = (0.5 * self.hfov_deg.to_radians()).tan();
-        let tan_v = (0.5 * self.vfov_deg.to_radians()).tan();
-        Vec3::new((2.0 * x - 1.0) * tan_h, (2.0 * y - 1.0) * tan_v, -1.0)
+        let t = self.tan_half_fov;
+        Vec3::new((2.0 * x - 1.0) * t.x, (2.0 * y - 1.0) * t.y, -1.0)
     }
 
     /// The pinhole ray through the normalised image point `(x, y)`,
@@ -145,10 +157,10 @@ impl Camera {
     /// the camera has a lens ([`ThinLens::ray`]), else the pinhole ray.
     #[doc(alias = "generate_ray_for_thin_lens")]
     pub fn generate_ray(&self, sample: &CameraSample) -> Ray {
-        let d_cam = self.film_direction(sample.film.x, sample.film.y);
         if self.lens.is_pinhole() {
             return self.ray(sample.film.x, sample.film.y);
         }
+        let d_cam = self.film_direction(sample.film.x, sample.film.y);
         let (origin, dir) = self.lens.ray(d_cam, sample.lens);
         Ray {
             origin: self.position + self.c2w * origin,
