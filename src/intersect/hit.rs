@@ -9,7 +9,7 @@
 
 use glam::Vec3;
 
-use crate::math::float::{next_float_down, next_float_up};
+use crate::math::float::next_float_towards;
 use crate::scene::MaterialId;
 
 use super::Ray;
@@ -43,20 +43,18 @@ impl Hit {
     /// The hit point pushed off the surface to the side `w` points to.
     pub fn offset_origin(&self, w: Vec3) -> Vec3 {
         let d = self.ng.abs().dot(self.p_error);
-        let mut offset = d * self.ng;
-        if w.dot(self.ng) < 0.0 {
-            offset = -offset;
-        }
-        let mut po = self.p + offset;
+        let offset = if w.dot(self.ng) < 0.0 {
+            -d * self.ng
+        } else {
+            d * self.ng
+        };
+        let po = self.p + offset;
         // Round away from the surface, so the sum cannot fall back onto it.
-        for axis in 0..3 {
-            if offset[axis] > 0.0 {
-                po[axis] = next_float_up(po[axis]);
-            } else if offset[axis] < 0.0 {
-                po[axis] = next_float_down(po[axis]);
-            }
-        }
-        po
+        Vec3::new(
+            next_float_towards(po.x, offset.x),
+            next_float_towards(po.y, offset.y),
+            next_float_towards(po.z, offset.z),
+        )
     }
 
     /// A ray leaving the surface in the unit direction `wi`.
