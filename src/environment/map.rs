@@ -191,16 +191,27 @@ impl EnvironmentMap {
         self.texels[j * self.width + i]
     }
 
-    /// Radiance at `(u, v)`, bilinear between texel centres.
+    /// Radiance at `(u, v)`, bilinear between texel centres (columns
+    /// wrapped around, rows clamped, as [`Self::texel`]).
     #[doc(alias = "bilerp")]
     pub fn lookup(&self, uv: Vec2) -> Rgb {
         let x = uv.x * self.width as f32 - 0.5;
         let y = uv.y * self.height as f32 - 0.5;
         let (x0, y0) = (x.floor(), y.floor());
         let (fx, fy) = (x - x0, y - y0);
-        let (i, j) = (x0 as i64, y0 as i64);
-        let top = self.texel(i, j).lerp(self.texel(i + 1, j), fx);
-        let bottom = self.texel(i, j + 1).lerp(self.texel(i + 1, j + 1), fx);
+        // Wrapping by comparison, not by a division per texel (a hot path).
+        let (w, h) = (self.width as i64, self.height as i64);
+        let i0 = match x0 as i64 {
+            i if (0..w).contains(&i) => i,
+            i => i.rem_euclid(w),
+        } as usize;
+        let i1 = if i0 + 1 == self.width { 0 } else { i0 + 1 };
+        let j = y0 as i64;
+        let j0 = j.clamp(0, h - 1) as usize * self.width;
+        let j1 = (j + 1).clamp(0, h - 1) as usize * self.width;
+        let t = &self.texels;
+        let top = t[j0 + i0].lerp(t[j0 + i1], fx);
+        let bottom = t[j1 + i0].lerp(t[j1 + i1], fx);
         top.lerp(bottom, fy)
     }
 
