@@ -110,7 +110,7 @@ impl DirectLights {
         match lights.choice() {
             LightChoice::EveryLight => {
                 let mut total = Rgb::ZERO;
-                for (index, light) in lights.lights.iter().enumerate() {
+                for (index, light) in lights.lit() {
                     let strategy = self.strategy(lights, index);
                     let mut sum = Rgb::ZERO;
                     for _ in 0..strategy.samples {

@@ -56,8 +56,12 @@ pub struct LightSet {
     /// Indices of the rectangle lights, which rays test, and whether an
     /// emissive surface shows each to the camera.
     rects: Vec<(usize, bool)>,
-    /// Indices of the lights at infinity.
+    /// Indices of the lights at infinity that emit.
     infinite: Vec<usize>,
+    /// Indices of the lights that emit (positive power): the ones direct
+    /// lighting samples. A black light or the course's spot light is left
+    /// out, so no sample or shadow ray is spent on it.
+    lit: Vec<usize>,
     has_unsampled: bool,
     scene_radius: f32,
     /// Which lights direct lighting samples, as asked for and as decided.
@@ -120,15 +124,14 @@ impl LightSet {
         if !triangles.is_empty() {
             lights.push(Light::Triangles(triangles));
         }
-        let indices = |keep: fn(&Light) -> bool| -> Vec<usize> {
-            (0..lights.len()).filter(|&i| keep(&lights[i])).collect()
-        };
+        let rects = (0..lights.len())
+            .filter(|&i| matches!(lights[i], Light::Rect(_)))
+            .map(|i| (i, stand_ins.lights[i]))
+            .collect();
         LightSet {
-            rects: indices(|l| matches!(l, Light::Rect(_)))
-                .into_iter()
-                .map(|i| (i, stand_ins.lights[i]))
-                .collect(),
-            infinite: indices(Light::is_infinite),
+            rects,
+            infinite: Vec::new(),
+            lit: Vec::new(),
             has_unsampled: roles.contains(&EmitterRole::Unsampled),
             roles,
             scene_radius: scene_radius(scene),
@@ -140,10 +143,27 @@ impl LightSet {
     }
 
     /// The same set with its lights chosen by `rule` ([`LightChoice`]).
+    /// Also finds the lights that emit and those at infinity among them:
+    /// called after every change to [`Self::lights`].
     pub fn with_choice(mut self, rule: LightChoiceRule) -> Self {
+        let radius = self.scene_radius;
+        self.lit = (0..self.lights.len())
+            .filter(|&i| self.lights[i].power(radius).max_element() > 0.0)
+            .collect();
+        self.infinite = self
+            .lit
+            .iter()
+            .copied()
+            .filter(|&i| self.lights[i].is_infinite())
+            .collect();
         self.choice_rule = rule;
-        self.choice = LightChoice::new(rule, &self.lights, self.scene_radius);
+        self.choice = LightChoice::new(rule, &self.lights, radius);
         self
+    }
+
+    /// The lights that emit, with their indices: what direct lighting samples.
+    pub fn lit(&self) -> impl Iterator<Item = (usize, &Light)> + '_ {
+        self.lit.iter().map(|&i| (i, &self.lights[i]))
     }
 
     /// How direct lighting chooses the lights it samples.
@@ -154,7 +174,6 @@ impl LightSet {
     /// The same set with the environment light `environment` added, at
     /// infinity: escaping rays see it, direct lighting samples it.
     pub fn with_environment(mut self, environment: EnvironmentLight) -> Self {
-        self.infinite.push(self.lights.len());
         self.lights.push(Light::Environment(environment));
         let rule = self.choice_rule;
         self.with_choice(rule)
@@ -179,7 +198,7 @@ impl LightSet {
             })
     }
 
-    /// The lights at infinity, with their indices.
+    /// The lights at infinity that emit, with their indices.
     pub fn infinite(&self) -> impl Iterator<Item = (usize, &Light)> + '_ {
         self.infinite.iter().map(|&i| (i, &self.lights[i]))
     }

@@ -16,7 +16,7 @@
 use crate::depth_of_field::ThinLens;
 use crate::direct::DirectLights;
 use crate::global::{DirectStrategy, PathTracer};
-use crate::lights::{Light, LightSet};
+use crate::lights::LightSet;
 use crate::materials::{Bsdf, BsdfOptions};
 use crate::math::{luminance, Rgb};
 use crate::scene::{Material, Scene};
@@ -101,10 +101,9 @@ impl Plan {
                 light_kinds.push(light.kind());
             }
         }
-        let sampled = |l: &&Light| !matches!(l, Light::Spot(_));
-        let area_lights = lights.lights.iter().any(|l| !l.is_delta());
+        let area_lights = lights.lit().any(|(_, l)| !l.is_delta());
         let light_sampling = matches!(tracer.direct, DirectStrategy::Lights(_))
-            && lights.lights.iter().any(|l| sampled(&l))
+            && lights.lit().next().is_some()
             && bsdfs.scatters();
         let mis = light_sampling && tracer.direct.mis() && area_lights;
         let mut lines = vec![
@@ -139,8 +138,8 @@ impl Plan {
         }
         lines.push(match tracer.direct {
             DirectStrategy::Lights(_) if light_sampling => format!(
-                "plan: light sampling: on (lights to sample and surfaces that scatter): {} lights, {}",
-                lights.lights.len(),
+                "plan: light sampling: on (lights to sample and surfaces that scatter): {} lights that emit, {}",
+                lights.lit().count(),
                 lights.choice().describe()
             ),
             DirectStrategy::Lights(_) => {
@@ -178,7 +177,7 @@ impl Plan {
             ));
         }
         if matches!(tracer.direct, DirectStrategy::Hemisphere(_))
-            && lights.lights.iter().any(|l| l.is_delta() && sampled(&l))
+            && lights.lit().any(|(_, l)| l.is_delta())
         {
             warnings.push("-H: hemisphere rays cannot find point or directional lights".into());
         }
