@@ -138,7 +138,7 @@ impl Plan {
         }
         lines.push(match tracer.direct {
             DirectStrategy::Lights(_) if light_sampling => format!(
-                "plan: light sampling: on (lights to sample and surfaces that scatter): {} lights that emit, {}",
+                "plan: light sampling: on (lights to sample and surfaces that scatter); lights that emit: {}; samples: {}",
                 lights.lit().count(),
                 lights.choice().describe()
             ),
