@@ -1,7 +1,7 @@
 //! The BVH as an [`Intersector`]: the tree plus the shapes stored in leaf
 //! order, so a leaf's shapes are contiguous in memory.
 
-use super::build::{build, BuildOptions};
+use super::build::{build_from, BuildOptions};
 use super::Bvh;
 use crate::intersect::{Aabb, Hit, Intersector, Primitives, Ray, Shape};
 
@@ -20,8 +20,7 @@ impl BvhAccel {
     }
 
     pub fn with_options(primitives: Primitives, options: &BuildOptions) -> Self {
-        let bounds = primitive_bounds(&primitives);
-        let bvh = build(&bounds, options);
+        let bvh = build_from(primitives.shapes.iter().map(Shape::bounds), options);
         let shapes = bvh
             .order
             .iter()
@@ -32,6 +31,11 @@ impl BvhAccel {
             shapes,
             primitives,
         }
+    }
+
+    /// Capacity of the leaf-ordered shapes, for [`BvhAccel::heap_bytes`].
+    pub(crate) fn shapes_capacity(&self) -> usize {
+        self.shapes.capacity()
     }
 
     /// Checks the tree against the primitives' boxes.

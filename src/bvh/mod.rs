@@ -21,7 +21,10 @@
 //! - [`BvhAccel`]: the BVH plus the shapes in leaf order, an [`Intersector`](crate::intersect::Intersector).
 
 pub mod accel;
+mod binning;
 pub mod build;
+pub mod cost;
+pub mod scale;
 pub mod throughput;
 pub mod traverse;
 pub mod validate;
