@@ -159,7 +159,10 @@ fn decide(bins: &mut Bins, refs: &[Ref], task: &Task, options: &BuildOptions) ->
     let leaf_allowed = count <= options.max_leaf_size;
     let RefBounds { cmin, cmax, .. } = task.bounds;
     let can_use_sah = task.depth < SAH_DEPTH_LIMIT && cmax.cmpgt(cmin).any();
-    if count <= 1 {
+    // A split costs more than `C_trav` (the children's term is positive),
+    // a leaf `count`: so a node of at most `C_trav` primitives is a leaf
+    // without binning, the decision the SAH would take.
+    if count <= 1 || (leaf_allowed && count as f32 <= options.traversal_cost) {
         return Decision::Leaf;
     }
     let split = if can_use_sah {

@@ -5,7 +5,7 @@
 //!
 //! Memory is counted exactly from the vectors' capacities (heap bytes,
 //! not what the allocator rounds them to), split into the accelerator
-//! (nodes, leaf order, leaf-ordered shapes), the primitives (shapes by id
+//! (nodes and leaf order), the primitives (shapes by id
 //! and each triangle's shading record) and the scene's mesh, which a
 //! render keeps. The peak resident memory of the whole process is read
 //! from the kernel (`VmHWM` in `/proc/self/status`, Linux only); the
@@ -34,7 +34,7 @@ pub const SHADING_BYTES: usize = 3 * size_of::<Vec3>() + size_of::<MaterialId>()
 /// Heap bytes of one part of the data, and how many triangles they serve.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Footprint {
-    /// Interior nodes, leaf order and leaf-ordered shapes.
+    /// Interior nodes and leaf order.
     pub accel: usize,
     /// Shapes by id and the triangles' shading records.
     pub primitives: usize,
@@ -64,12 +64,10 @@ impl Footprint {
 }
 
 impl BvhAccel {
-    /// Heap bytes of the accelerator's own vectors (nodes, leaf order,
-    /// leaf-ordered shapes), from their capacities.
+    /// Heap bytes of the accelerator's own vectors (nodes and leaf
+    /// order), from their capacities.
     pub fn heap_bytes(&self) -> usize {
-        self.bvh.nodes.capacity() * size_of::<Node>()
-            + self.bvh.order.capacity() * size_of::<u32>()
-            + self.shapes_capacity() * size_of::<Shape>()
+        self.bvh.nodes.capacity() * size_of::<Node>() + self.bvh.order.capacity() * size_of::<u32>()
     }
 }
 
@@ -159,7 +157,7 @@ pub struct BuildTime {
     pub cpu: Option<f64>,
 }
 
-/// Times of `BvhAccel::new` (primitive boxes, tree, leaf-ordered shapes)
+/// Times of `BvhAccel::new` (the primitives' boxes and the tree)
 /// over the sphere of `phi x theta` steps, `runs` times on the current
 /// thread pool, and the tree's SAH cost: for profiling the build.
 pub fn build_times(phi_steps: u32, theta_steps: u32, runs: usize) -> (Vec<BuildTime>, f64) {
