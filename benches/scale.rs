@@ -7,12 +7,14 @@
 //! cargo bench --bench scale -- --max 1000000 # stop after 1M
 //! cargo bench --bench scale -- --build 1024 512 5 [-t N]
 //!                                            # build times only, 5 runs
+//! cargo bench --bench scale -- --write-dae 1024 512 bumpy-1m.dae
+//!                                            # the sphere as a scene file
 //! ```
 //!
 //! `-t N` sets the thread pool (default: one thread, the comparison with
 //! Embree's build on one core; the ray rates are always one thread).
 
-use pathtracer::bvh::scale::{build_times, scale_row, ScaleRow, SIZES};
+use pathtracer::bvh::scale::{build_times, scale_row, write_bumpy_sphere, ScaleRow, SIZES};
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -25,6 +27,14 @@ fn main() {
         .num_threads(threads)
         .build_global()
         .expect("the global thread pool");
+    if let Some(at) = args.iter().position(|a| a == "--write-dae") {
+        let phi = value("--write-dae", 0).unwrap_or(1024) as u32;
+        let theta = value("--write-dae", 1).unwrap_or(512) as u32;
+        let path = args.get(at + 3).expect("--write-dae PHI THETA FILE");
+        write_bumpy_sphere(phi, theta, path.as_ref()).expect("writing the scene file");
+        println!("wrote {path}: {} triangles", 2 * phi * (theta - 1));
+        return;
+    }
     if args.iter().any(|a| a == "--build") {
         let phi = value("--build", 0).unwrap_or(1024) as u32;
         let theta = value("--build", 1).unwrap_or(512) as u32;

@@ -50,8 +50,8 @@ impl Default for BuildOptions {
     }
 }
 
-/// A subtree still to be built: its references, their bounds, and where
-/// to link it.
+/// A subtree still to be built: its references `start..end` (within
+/// the slice being built), their bounds, and where to link it.
 struct Task {
     start: usize,
     end: usize,
@@ -69,6 +69,13 @@ enum Decision {
     Median,
 }
 
+/// A built subtree: its root link and its interior nodes, numbered from
+/// 0 in `nodes` (leaf slots are already those of the whole tree).
+pub(super) struct Subtree {
+    pub root: Link,
+    pub nodes: Vec<Node>,
+}
+
 /// Builds a BVH over boxes `bounds[id]`; empty boxes are allowed and are
 /// simply stored (they can never be hit).
 pub fn build(bounds: &[Aabb], options: &BuildOptions) -> Bvh {
@@ -77,6 +84,9 @@ pub fn build(bounds: &[Aabb], options: &BuildOptions) -> Bvh {
 
 /// [`build`] over boxes given one at a time, primitive `id` being the
 /// `id`-th, so that a caller need not collect them first.
+///
+/// On a rayon pool of more than one thread, the top of the tree is built
+/// in parallel ([`super::parallel`]); the tree is the same either way.
 pub fn build_from(bounds: impl IntoIterator<Item = Aabb>, options: &BuildOptions) -> Bvh {
     let mut refs: Vec<Ref> = bounds
         .into_iter()
@@ -89,37 +99,72 @@ pub fn build_from(bounds: impl IntoIterator<Item = Aabb>, options: &BuildOptions
         return Bvh::default();
     }
     let mut ids: Vec<u32> = (0..refs.len() as u32).collect();
+    let bounds = RefBounds::of(&refs);
+    let root = SubtreeAt {
+        first_slot: 0,
+        depth: 1,
+        bounds,
+    };
+    let Subtree { root, mut nodes } = if rayon::current_num_threads() > 1 {
+        super::parallel::build_parallel(&mut refs, &mut ids, root, options)
+    } else {
+        build_subtree(&mut refs, &mut ids, root, options)
+    };
+    nodes.shrink_to_fit();
+    Bvh {
+        bounds: bounds.aabb(),
+        root: Some(root),
+        nodes,
+        order: ids,
+    }
+}
+
+/// Where a subtree sits in the whole tree: its first leaf slot, its
+/// depth and the bounds of its references.
+#[derive(Clone, Copy)]
+pub(super) struct SubtreeAt {
+    pub first_slot: usize,
+    pub depth: usize,
+    pub bounds: RefBounds,
+}
+
+/// Builds the subtree over `refs` (and their `ids`), top-down with an
+/// explicit stack, on the calling thread.
+pub(super) fn build_subtree(
+    refs: &mut [Ref],
+    ids: &mut [u32],
+    at: SubtreeAt,
+    options: &BuildOptions,
+) -> Subtree {
     // A binary tree with at least one primitive per leaf has fewer
     // interior nodes than primitives.
-    let mut nodes: Vec<Node> = Vec::with_capacity(refs.len() - 1);
+    let mut nodes: Vec<Node> = Vec::with_capacity(refs.len().saturating_sub(1));
     let mut bins = Bins::default();
-    let root_bounds = RefBounds::of(&refs);
     let mut root = Link::default();
     let mut stack = vec![Task {
         start: 0,
         end: refs.len(),
-        depth: 1,
-        bounds: root_bounds,
+        depth: at.depth,
+        bounds: at.bounds,
         parent: None,
     }];
     while let Some(task) = stack.pop() {
         let range = task.start..task.end;
-        let decision = decide(&mut bins, &refs[range.clone()], &task, options);
-        let (mid, child_bounds) = match decision {
-            Decision::Leaf => {
-                let leaf = Link {
-                    first: task.start as u32,
-                    count: range.len() as u32,
-                };
-                set_link(&mut nodes, &mut root, task.parent, leaf);
-                continue;
-            }
-            Decision::Split(split) => partition(&mut refs[range.clone()], &mut ids[range], &split),
-            Decision::Median => {
-                let mid = range.len() / 2;
-                let (left, right) = refs[range].split_at(mid);
-                (mid, [RefBounds::of(left), RefBounds::of(right)])
-            }
+        let split = split_node(
+            &mut bins,
+            &mut refs[range.clone()],
+            &mut ids[range.clone()],
+            task.depth,
+            &task.bounds,
+            options,
+        );
+        let Some((mid, child_bounds)) = split else {
+            let leaf = Link {
+                first: (at.first_slot + task.start) as u32,
+                count: range.len() as u32,
+            };
+            set_link(&mut nodes, &mut root, task.parent, leaf);
+            continue;
         };
         let split_at = task.start + mid;
         let halves = [(task.start, split_at), (split_at, task.end)];
@@ -143,22 +188,42 @@ pub fn build_from(bounds: impl IntoIterator<Item = Aabb>, options: &BuildOptions
             });
         }
     }
-    nodes.shrink_to_fit();
-    Bvh {
-        bounds: root_bounds.aabb(),
-        root: Some(root),
-        nodes,
-        order: ids,
+    Subtree { root, nodes }
+}
+
+/// Splits a node's references in place: how many go to the first child
+/// and both children's bounds; `None` for a leaf.
+pub(super) fn split_node(
+    bins: &mut Bins,
+    refs: &mut [Ref],
+    ids: &mut [u32],
+    depth: usize,
+    bounds: &RefBounds,
+    options: &BuildOptions,
+) -> Option<(usize, [RefBounds; 2])> {
+    match decide(bins, refs, depth, bounds, options) {
+        Decision::Leaf => None,
+        Decision::Split(split) => Some(partition(refs, ids, &split)),
+        Decision::Median => {
+            let mid = refs.len() / 2;
+            let (left, right) = refs.split_at(mid);
+            Some((mid, [RefBounds::of(left), RefBounds::of(right)]))
+        }
     }
 }
 
-/// Leaf, SAH split or median split for the references of `task`: the
-/// cheaper of the best SAH split and a leaf, where a leaf is allowed.
-fn decide(bins: &mut Bins, refs: &[Ref], task: &Task, options: &BuildOptions) -> Decision {
+/// Leaf, SAH split or median split for `refs`: the cheaper of the best
+/// SAH split and a leaf, where a leaf is allowed.
+fn decide(
+    bins: &mut Bins,
+    refs: &[Ref],
+    depth: usize,
+    bounds: &RefBounds,
+    options: &BuildOptions,
+) -> Decision {
     let count = refs.len();
     let leaf_allowed = count <= options.max_leaf_size;
-    let RefBounds { cmin, cmax, .. } = task.bounds;
-    let can_use_sah = task.depth < SAH_DEPTH_LIMIT && cmax.cmpgt(cmin).any();
+    let can_use_sah = depth < SAH_DEPTH_LIMIT && bounds.cmax.cmpgt(bounds.cmin).any();
     // A split costs more than `C_trav` (the children's term is positive),
     // a leaf `count`: so a node of at most `C_trav` primitives is a leaf
     // without binning, the decision the SAH would take.
@@ -166,7 +231,7 @@ fn decide(bins: &mut Bins, refs: &[Ref], task: &Task, options: &BuildOptions) ->
         return Decision::Leaf;
     }
     let split = if can_use_sah {
-        bins.best_split(refs, &task.bounds)
+        bins.best_split(refs, bounds)
     } else {
         None
     };
@@ -174,7 +239,7 @@ fn decide(bins: &mut Bins, refs: &[Ref], task: &Task, options: &BuildOptions) ->
         None if leaf_allowed => Decision::Leaf,
         None => Decision::Median,
         Some(split) => {
-            let node_area = task.bounds.half_area().max(f32::MIN_POSITIVE);
+            let node_area = bounds.half_area().max(f32::MIN_POSITIVE);
             let split_cost = options.traversal_cost + split.cost / node_area;
             if leaf_allowed && count as f32 <= split_cost {
                 Decision::Leaf

@@ -28,6 +28,7 @@ pub mod accel;
 mod binning;
 pub mod build;
 pub mod cost;
+mod parallel;
 pub mod scale;
 pub mod throughput;
 pub mod traverse;

@@ -12,7 +12,9 @@
 //! sizes run in increasing order and everything is freed between them,
 //! so the peak after a size is that size's peak.
 
+use std::io::Write;
 use std::mem::size_of;
+use std::path::Path;
 use std::time::Instant;
 
 use glam::Vec3;
@@ -21,6 +23,7 @@ use super::throughput::{measure, primary_rays, random_rays, RaySet};
 use super::{BuildOptions, BvhAccel, Node};
 use crate::intersect::{Primitives, Shape};
 use crate::scene::builtin::bumpy_sphere;
+use crate::scene::export::{write_dae, ExportView};
 use crate::scene::{MaterialId, TriangleMesh};
 
 /// Grid sizes `(phi_steps, theta_steps)` of the bumpy sphere for about
@@ -175,4 +178,21 @@ pub fn build_times(phi_steps: u32, theta_steps: u32, runs: usize) -> (Vec<BuildT
         })
         .collect();
     (times, cost)
+}
+
+/// Writes the sphere of `phi x theta` steps as a `.dae` file for
+/// `pathtracer` ([`crate::scene::export`]): seen from the benchmark
+/// camera's direction, lit by a point light above and to the right.
+pub fn write_bumpy_sphere(phi_steps: u32, theta_steps: u32, path: &Path) -> std::io::Result<()> {
+    let scene = bumpy_sphere(phi_steps, theta_steps);
+    let view = ExportView {
+        dir_to_camera: Vec3::new(0.0, 0.3, 3.2).normalize(),
+        hfov_deg: 45.0,
+        light_position: Vec3::new(2.0, 3.0, 4.0),
+        light_intensity: 30.0,
+        albedo: 0.6,
+    };
+    let mut out = std::io::BufWriter::new(std::fs::File::create(path)?);
+    write_dae(&scene.mesh, &view, &mut out)?;
+    out.flush()
 }
