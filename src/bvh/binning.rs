@@ -60,7 +60,7 @@ impl RefBounds {
     };
 
     #[inline(always)]
-    fn grow(&mut self, r: &Ref) {
+    pub fn grow(&mut self, r: &Ref) {
         let c = r.centroid();
         self.min = self.min.min(r.min);
         self.max = self.max.max(r.max);
@@ -191,18 +191,14 @@ type AxisBins = [[Bin; MAX_BINS]; 3];
 
 /// The bins of one node, allocated once per build and reused, so a node
 /// allocates nothing.
-///
-/// Two sets, filled by alternate references and merged at the end:
-/// neighbouring primitives of a mesh mostly fall into the same bins, and
-/// with one set each update would wait for the previous one's store.
 pub struct Bins {
-    sets: [AxisBins; 2],
+    bins: AxisBins,
 }
 
 impl Default for Bins {
     fn default() -> Self {
         Bins {
-            sets: [[[Bin::EMPTY; MAX_BINS]; 3]; 2],
+            bins: [[Bin::EMPTY; MAX_BINS]; 3],
         }
     }
 }
@@ -234,16 +230,14 @@ impl Bins {
     pub fn best_split(&mut self, refs: &[Ref], bounds: &RefBounds) -> Option<Split> {
         let binner = Binner::new(bounds, bin_count(refs.len()));
         let k = binner.count;
-        for set in &mut self.sets {
-            for axis in set.iter_mut() {
-                axis[..k].fill(Bin::EMPTY);
-            }
+        for axis in &mut self.bins {
+            axis[..k].fill(Bin::EMPTY);
         }
         for r in refs {
-            add(&mut self.sets[0], binner.bins(r), r);
+            add(&mut self.bins, binner.bins(r), r);
         }
         let mut best: Option<Split> = None;
-        for (axis, bins) in self.sets[0].iter().enumerate() {
+        for (axis, bins) in self.bins.iter().enumerate() {
             if binner.scale[axis] == 0.0 {
                 continue;
             }

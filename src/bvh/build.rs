@@ -88,18 +88,24 @@ pub fn build(bounds: &[Aabb], options: &BuildOptions) -> Bvh {
 /// On a rayon pool of more than one thread, the top of the tree is built
 /// in parallel ([`super::parallel`]); the tree is the same either way.
 pub fn build_from(bounds: impl IntoIterator<Item = Aabb>, options: &BuildOptions) -> Bvh {
+    // The references, and their bounds on the way.
+    let mut all = RefBounds::EMPTY;
     let mut refs: Vec<Ref> = bounds
         .into_iter()
-        .map(|b| Ref {
-            min: b.min.into(),
-            max: b.max.into(),
+        .map(|b| {
+            let r = Ref {
+                min: b.min.into(),
+                max: b.max.into(),
+            };
+            all.grow(&r);
+            r
         })
         .collect();
     if refs.is_empty() {
         return Bvh::default();
     }
     let mut ids: Vec<u32> = (0..refs.len() as u32).collect();
-    let bounds = RefBounds::of(&refs);
+    let bounds = all;
     let root = SubtreeAt {
         first_slot: 0,
         depth: 1,
