@@ -11,8 +11,10 @@
 //!                                            # the sphere as a scene file
 //! ```
 //!
-//! `-t N` sets the thread pool (default: one thread, the comparison with
-//! Embree's build on one core; the ray rates are always one thread).
+//! `-t N` sets the thread pool the build runs on (default: one thread,
+//! the comparison with Embree's build on one core); the ray rates are
+//! always traced on one thread and timed in CPU time
+//! ([`pathtracer::bvh::scale::closest_hit_rate`]).
 
 use pathtracer::bvh::scale::{build_times, scale_row, write_bumpy_sphere, ScaleRow, SIZES};
 
