@@ -265,3 +265,35 @@ fn set_link(nodes: &mut [Node], root: &mut Link, parent: Option<(usize, usize)>,
         None => *root = link,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::Vec3;
+
+    /// Boxes with NaN, infinite or empty extents (from broken input) still
+    /// build: every id lands in exactly one leaf, and nothing panics.
+    #[test]
+    fn broken_boxes_still_build() {
+        let unit = |x: f32| Aabb {
+            min: Vec3::new(x, 0.0, 0.0),
+            max: Vec3::new(x + 1.0, 1.0, 1.0),
+        };
+        let mut boxes: Vec<Aabb> = (0..200).map(|i| unit(i as f32)).collect();
+        boxes[3].min.x = f32::NAN;
+        boxes[50].max = Vec3::splat(f32::INFINITY);
+        boxes[51].min = Vec3::splat(f32::NEG_INFINITY);
+        boxes[120] = Aabb::EMPTY;
+        let bvh = build(&boxes, &BuildOptions::default());
+        let mut order = bvh.order.clone();
+        order.sort_unstable();
+        assert_eq!(order, (0..200).collect::<Vec<u32>>());
+        let slots: u32 = bvh
+            .links()
+            .iter()
+            .filter(|(l, _)| l.is_leaf())
+            .map(|(l, _)| l.count)
+            .sum();
+        assert_eq!(slots, 200);
+    }
+}
