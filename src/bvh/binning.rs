@@ -122,7 +122,9 @@ impl Binner {
     #[inline(always)]
     fn bins(&self, r: &Ref) -> [usize; 3] {
         let b = (r.centroid() - self.cmin) * self.scale;
-        // A NaN centroid (a NaN box) goes to bin 0.
+        // Clamped to [0, K - 1]; a NaN lane (a NaN box) becomes 0, as
+        // SSE's max returns its second operand when one is NaN (and
+        // scalar `f32::max` returns the number).
         let b = b
             .max(Vec3A::ZERO)
             .min(Vec3A::splat(self.count as f32 - 1.0));
