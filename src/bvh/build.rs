@@ -7,7 +7,7 @@
 //! children's boxes on the way.
 //!
 //! What makes it fast (1,046,528 triangles on one core: 0.55 s before
-//! these, 0.31-0.34 s of CPU time after, Embree 4.4's 0.33-0.34 s in the
+//! these, 0.31-0.34 s of CPU time after, Embree 4.4's 0.33-0.37 s in the
 //! same session; `docs/03-bvh.md`, "Scale"):
 //! - one compact array of references (a box, 32 bytes, the centroid
 //!   computed on the fly) and one of ids, partitioned in place, so the
