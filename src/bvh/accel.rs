@@ -1,15 +1,19 @@
-//! The BVH as an [`Intersector`]: the tree plus the shapes stored in leaf
-//! order, so a leaf's shapes are contiguous in memory.
+//! The BVH as an [`Intersector`]: the tree over the scene's primitives.
+//!
+//! A leaf's slot `s` holds primitive `bvh.order[s]`, whose shape is read
+//! from [`Primitives::shapes`] through that id. (Until the scale work the
+//! shapes were also copied into leaf order, so a leaf's shapes were
+//! contiguous; the copy cost 40 bytes per triangle, a third of the
+//! accelerator's memory, and a few percent of the primary-ray rate; see
+//! `docs/03-bvh.md`, "Scale".)
 
-use super::build::{build, BuildOptions};
+use super::build::{build_from, BuildOptions};
 use super::Bvh;
 use crate::intersect::{Aabb, Hit, Intersector, Primitives, Ray, Shape};
 
 /// A BVH over a scene's primitives.
 pub struct BvhAccel {
     pub bvh: Bvh,
-    /// `shapes[slot]` is primitive `bvh.order[slot]`.
-    shapes: Vec<Shape>,
     pub primitives: Primitives,
 }
 
@@ -20,18 +24,15 @@ impl BvhAccel {
     }
 
     pub fn with_options(primitives: Primitives, options: &BuildOptions) -> Self {
-        let bounds = primitive_bounds(&primitives);
-        let bvh = build(&bounds, options);
-        let shapes = bvh
-            .order
-            .iter()
-            .map(|&id| primitives.shapes[id as usize])
-            .collect();
-        BvhAccel {
-            bvh,
-            shapes,
-            primitives,
-        }
+        let bvh = build_from(primitives.shapes.iter().map(Shape::bounds), options);
+        BvhAccel { bvh, primitives }
+    }
+
+    /// The primitive id and shape at leaf slot `slot`.
+    #[inline(always)]
+    fn slot(&self, slot: u32) -> (u32, &Shape) {
+        let id = self.bvh.order[slot as usize];
+        (id, &self.primitives.shapes[id as usize])
     }
 
     /// Checks the tree against the primitives' boxes.
@@ -50,23 +51,19 @@ impl Intersector for BvhAccel {
         let mut best = None;
         let test = self.primitives.triangle_test;
         self.bvh.closest_hit(ray, |slot, t_max| {
-            let hit = self.shapes[slot as usize].intersect_with(ray, t_max, test)?;
-            best = Some((slot, hit));
+            let (id, shape) = self.slot(slot);
+            let hit = shape.intersect_with(ray, t_max, test)?;
+            best = Some((id, shape, hit));
             Some(hit.t)
         });
-        best.map(|(slot, hit)| {
-            let shape = &self.shapes[slot as usize];
-            self.primitives
-                .finish_hit(self.bvh.order[slot as usize], shape, ray, hit)
-        })
+        best.map(|(id, shape, hit)| self.primitives.finish_hit(id, shape, ray, hit))
     }
 
     fn occluded(&self, ray: &Ray) -> bool {
         let test = self.primitives.triangle_test;
         self.bvh.any_hit(ray, |slot| {
-            self.shapes[slot as usize]
-                .intersect_with(ray, ray.t_max, test)
-                .is_some()
+            let (_, shape) = self.slot(slot);
+            shape.intersect_with(ray, ray.t_max, test).is_some()
         })
     }
 }

@@ -17,11 +17,19 @@
 //!   holds both boxes that traversal tests next.
 //! - [`traverse`]: closest-hit (front-to-back, nearer child first, with a
 //!   stack) and any-hit (shadow rays: stop at the first hit).
-//! - [`validate`]: structural checks used after every build in the tests.
-//! - [`BvhAccel`]: the BVH plus the shapes in leaf order, an [`Intersector`](crate::intersect::Intersector).
+//! - [`validate`]: structural checks used after every build in the tests;
+//!   [`cost`]: the SAH cost of a whole tree, its quality.
+//! - [`throughput`] and [`scale`]: the ray-throughput benchmark and the
+//!   scale benchmark (build time, memory and ray rate from 10k to 10M
+//!   triangles).
+//! - [`BvhAccel`]: the BVH over a scene's primitives, an [`Intersector`](crate::intersect::Intersector).
 
 pub mod accel;
+mod binning;
 pub mod build;
+pub mod cost;
+mod parallel;
+pub mod scale;
 pub mod throughput;
 pub mod traverse;
 pub mod validate;

@@ -3,12 +3,14 @@
 //!
 //! `load(path)` reads a `.dae` file; [`builtin::cornell_box`] makes the
 //! default scene in code. Both give a [`Scene`] in world space (Y-up).
-//! [`course_files`] finds the course's own scenes (`$CS184_SCENES`).
+//! [`course_files`] finds the course's own scenes (`$CS184_SCENES`);
+//! [`export`] writes a generated mesh as a `.dae` file.
 
 pub mod builtin;
 pub mod collada;
 pub mod course_files;
 pub mod error;
+pub mod export;
 pub mod info;
 pub mod model;
 pub mod normals;
