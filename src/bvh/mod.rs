@@ -19,16 +19,21 @@
 //!   stack) and any-hit (shadow rays: stop at the first hit).
 //! - [`validate`]: structural checks used after every build in the tests.
 //! - [`BvhAccel`]: the BVH plus the shapes in leaf order, an [`Intersector`](crate::intersect::Intersector).
+//! - [`wide`]: the fast version the renderers use, [`WideBvhAccel`]: the
+//!   same build collapsed to four children per node, with SIMD box and
+//!   triangle tests and the same hits.
 
 pub mod accel;
 pub mod build;
 pub mod throughput;
 pub mod traverse;
 pub mod validate;
+pub mod wide;
 
 pub use accel::BvhAccel;
 pub use build::BuildOptions;
 pub use validate::ValidationError;
+pub use wide::WideBvhAccel;
 
 use glam::{Vec3, Vec4, Vec4Swizzles};
 
