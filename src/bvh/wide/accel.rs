@@ -13,7 +13,7 @@ use super::leaf::{RayShear, TrianglePack};
 use super::{WideBvh, WideLink};
 use crate::bvh::accel::primitive_bounds;
 use crate::bvh::build::{build, BuildOptions};
-use crate::bvh::ValidationError;
+use crate::bvh::{Bvh, ValidationError};
 use crate::intersect::{Hit, Intersector, Primitives, Ray, Shape, ShapeHit, TriangleTest};
 
 /// A four-wide BVH over a scene's primitives.
@@ -30,8 +30,13 @@ impl WideBvhAccel {
 
     pub fn with_options(primitives: Primitives, options: &BuildOptions) -> Self {
         let bvh = build(&primitive_bounds(&primitives), options);
+        Self::from_binary(&bvh, primitives)
+    }
+
+    /// Collapses a binary BVH built over `primitives` (by [`build`]).
+    pub fn from_binary(bvh: &Bvh, primitives: Primitives) -> Self {
         WideBvhAccel {
-            wide: collapse(&bvh, &primitives.shapes),
+            wide: collapse(bvh, &primitives.shapes),
             primitives,
         }
     }
@@ -118,6 +123,9 @@ impl Intersector for WideBvhAccel {
         let mut best = None;
         self.wide.closest_hit(ray, |link, t_max| {
             let found = self.leaf_hit(link, ray, &shear, t_max)?;
+            if let Some((id, _)) = self.wide.packs[found.index].lane(found.lane) {
+                self.primitives.prefetch_shading(id);
+            }
             best = Some(found);
             Some(found.hit.t)
         });

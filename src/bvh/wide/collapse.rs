@@ -17,7 +17,13 @@ use super::leaf::TrianglePack;
 use super::node::WideNode;
 use super::{WideBvh, WideLink, WIDTH};
 use crate::bvh::{Bvh, Link};
+use glam::Vec3;
+
+use crate::intersect::triangle::TriangleShape;
 use crate::intersect::{Aabb, Shape};
+
+/// Binary subtrees of at most this many primitives become one leaf.
+pub const MERGE: usize = 3 * WIDTH;
 
 /// The wide BVH over the same primitives as `bvh`; `shapes[id]` is
 /// primitive `id`'s shape.
@@ -26,6 +32,7 @@ pub fn collapse(bvh: &Bvh, shapes: &[Shape]) -> WideBvh {
         bvh,
         shapes,
         sizes: subtree_sizes(bvh),
+        scratch: Vec::new(),
         nodes: Vec::with_capacity(bvh.nodes.len() / 2 + 1),
         packs: Vec::with_capacity(shapes.len() / 2 + 1),
     };
@@ -62,6 +69,8 @@ struct Collapser<'a> {
     bvh: &'a Bvh,
     shapes: &'a [Shape],
     sizes: Vec<u32>,
+    /// Reused list of a leaf's slots.
+    scratch: Vec<u32>,
     nodes: Vec<WideNode>,
     packs: Vec<TrianglePack>,
 }
@@ -69,7 +78,7 @@ struct Collapser<'a> {
 impl Collapser<'_> {
     /// Whether `link` becomes a leaf: a binary leaf, or a small subtree.
     fn becomes_leaf(&self, link: Link) -> bool {
-        link.is_leaf() || self.sizes[link.first as usize] as usize <= WIDTH
+        link.is_leaf() || self.sizes[link.first as usize] as usize <= MERGE
     }
 
     fn link(&mut self, link: Link) -> WideLink {
@@ -94,29 +103,31 @@ impl Collapser<'_> {
     /// The wide node for binary node `index`, and its subtrees.
     fn node(&mut self, index: usize) -> WideLink {
         let binary = &self.bvh.nodes[index];
-        let mut children: Vec<(Aabb, Link)> = (0..2)
-            .map(|i| (binary.child_bounds(i), binary.children[i]))
-            .collect();
-        while children.len() < WIDTH {
+        let mut children = [(Aabb::EMPTY, Link::default()); WIDTH];
+        children[0] = (binary.child_bounds(0), binary.children[0]);
+        children[1] = (binary.child_bounds(1), binary.children[1]);
+        let mut n = 2;
+        while n < WIDTH {
             // The interior child with the largest surface area, if any.
-            let open = children
-                .iter()
-                .enumerate()
-                .filter(|(_, (_, link))| !self.becomes_leaf(*link))
-                .max_by(|a, b| a.1 .0.surface_area().total_cmp(&b.1 .0.surface_area()))
-                .map(|(i, _)| i);
+            let open = (0..n)
+                .filter(|&i| !self.becomes_leaf(children[i].1))
+                .max_by(|&a, &b| {
+                    let area = |i: usize| children[i].0.surface_area();
+                    area(a).total_cmp(&area(b))
+                });
             let Some(i) = open else { break };
-            let (_, link) = children.swap_remove(i);
-            let grand = &self.bvh.nodes[link.first as usize];
-            children.extend((0..2).map(|j| (grand.child_bounds(j), grand.children[j])));
+            let grand = &self.bvh.nodes[children[i].1.first as usize];
+            children[i] = (grand.child_bounds(0), grand.children[0]);
+            children[n] = (grand.child_bounds(1), grand.children[1]);
+            n += 1;
         }
         let me = self.nodes.len();
         self.nodes.push(WideNode::new(&[]));
-        let wide: Vec<(Aabb, WideLink)> = children
-            .into_iter()
-            .map(|(bounds, link)| (bounds, self.link(link)))
-            .collect();
-        self.nodes[me] = WideNode::new(&wide);
+        let mut wide = [(Aabb::EMPTY, WideLink::EMPTY); WIDTH];
+        for (slot, &(bounds, link)) in wide.iter_mut().zip(&children[..n]) {
+            *slot = (bounds, self.link(link));
+        }
+        self.nodes[me] = WideNode::new(&wide[..n]);
         WideLink {
             first: me as u32,
             count: 0,
@@ -128,20 +139,21 @@ impl Collapser<'_> {
     fn leaf(&mut self, link: Link) -> WideLink {
         let first = self.packs.len();
         let mut has_spheres = false;
-        let mut slots = Vec::new();
+        let mut slots = std::mem::take(&mut self.scratch);
+        slots.clear();
         self.slots(link, &mut slots);
         for chunk in slots.chunks(WIDTH) {
-            let lanes: Vec<(u32, Shape)> = chunk
-                .iter()
-                .map(|&slot| {
-                    let id = self.bvh.order[slot as usize];
-                    let shape = self.shapes[id as usize];
-                    has_spheres |= matches!(shape, Shape::Sphere(_));
-                    (id, shape)
-                })
-                .collect();
-            self.packs.push(TrianglePack::new(&lanes));
+            let unused = Shape::Triangle(TriangleShape::new(Vec3::ZERO, Vec3::ZERO, Vec3::ZERO));
+            let mut lanes = [(0, unused); WIDTH];
+            for (lane, &slot) in lanes.iter_mut().zip(chunk) {
+                let id = self.bvh.order[slot as usize];
+                let shape = self.shapes[id as usize];
+                has_spheres |= matches!(shape, Shape::Sphere(_));
+                *lane = (id, shape);
+            }
+            self.packs.push(TrianglePack::new(&lanes[..chunk.len()]));
         }
+        self.scratch = slots;
         let count = (self.packs.len() - first) as u32;
         WideLink {
             first: first as u32,

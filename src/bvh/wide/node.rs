@@ -28,7 +28,10 @@
 //! and starts exactly on a plane gets `0 · inf = NaN` there. It lies in
 //! that slab, so a NaN near distance becomes `-inf` and a NaN far one
 //! `+inf`. Only rays with a zero direction component can meet this, and
-//! only they pay for the check.
+//! only they pay for the check. (Tried instead: `1/d = ±f32::MAX` for a
+//! zero component, which avoids the NaN, but a ray starting exactly on a
+//! box's far plane then gets a far distance of 0 instead of +inf and
+//! misses the box: the unit test below caught it.)
 
 use glam::{Vec3, Vec4};
 

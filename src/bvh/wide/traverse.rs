@@ -20,6 +20,7 @@ use super::{WideBvh, WideLink, WIDTH};
 use crate::bvh::traverse::Stack;
 use crate::bvh::MAX_DEPTH;
 use crate::intersect::Ray;
+use crate::math::prefetch::prefetch_lines;
 
 /// Capacity of the traversal stack.
 const STACK: usize = (WIDTH - 1) * MAX_DEPTH + 1;
@@ -55,6 +56,7 @@ impl WideBvh {
                 let node = &self.nodes[link.first as usize];
                 let (mask, enter) = node.hit(&boxes, t_max);
                 if mask != 0 {
+                    self.prefetch_children(node, mask);
                     link = nearest_child(node, mask, enter, &mut stack);
                     continue;
                 }
@@ -106,6 +108,26 @@ impl WideBvh {
             }
         }
         false
+    }
+}
+
+impl WideBvh {
+    /// Asks for the memory of the children in `mask` (their nodes, or
+    /// their leaves' first packs), so the misses of all of them overlap
+    /// instead of each waiting its turn.
+    #[inline(always)]
+    fn prefetch_children(&self, node: &WideNode, mut mask: u32) {
+        while mask != 0 {
+            let child = node.children[mask.trailing_zeros() as usize];
+            mask &= mask - 1;
+            if child.is_leaf() {
+                let pack = self.packs.as_ptr().wrapping_add(child.first as usize);
+                prefetch_lines(pack, 3);
+            } else {
+                let node = self.nodes.as_ptr().wrapping_add(child.first as usize);
+                prefetch_lines(node, 2);
+            }
+        }
     }
 }
 

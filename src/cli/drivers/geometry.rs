@@ -140,9 +140,12 @@ pub fn bvh_benchmark(threads: Option<usize>, accel: AccelArg) -> Result<()> {
             trace_benchmark_sets(&accel, threads);
         }
         AccelArg::Wide => {
-            let (accel, build) = build_benchmark_wide(1024, 512);
+            let (accel, [binary, collapse]) = build_benchmark_wide(1024, 512);
             let (leaves, depth, lanes) = accel.wide.leaf_stats();
-            println!("wide BVH: build {build:.3} s");
+            println!(
+                "wide BVH: build {:.3} s (binary SAH build {binary:.3} s, collapse {collapse:.3} s)",
+                binary + collapse
+            );
             println!(
                 "triangles {} nodes {} leaves {leaves} depth {depth} packs {} lanes used {:.1} %",
                 accel.primitives.len(),
