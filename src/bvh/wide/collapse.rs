@@ -33,8 +33,11 @@ pub fn collapse(bvh: &Bvh, shapes: &[Shape]) -> WideBvh {
         shapes,
         sizes: subtree_sizes(bvh),
         scratch: Vec::new(),
-        nodes: Vec::with_capacity(bvh.nodes.len() / 2 + 1),
-        packs: Vec::with_capacity(shapes.len() / 2 + 1),
+        // Upper bounds (a wide node takes at least one binary node, a pack
+        // at least one primitive), so the vectors never grow and copy;
+        // only the pages written are ever backed by memory.
+        nodes: Vec::with_capacity(bvh.nodes.len()),
+        packs: Vec::with_capacity(shapes.len()),
     };
     let root = bvh.root.map(|root| out.link(root));
     WideBvh {
