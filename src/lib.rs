@@ -7,7 +7,7 @@
 //! | --- | --- | --- | --- |
 //! | 1 ray generation | [`raygen`] (pinhole camera) | `part1-raygen` | `docs/01-raygen.md` |
 //! | 1 intersection | [`intersect`] (ray, hit, triangle, sphere) | `part1-raygen` | `docs/02-intersect.md` |
-//! | 2 BVH | [`bvh`] (build, traverse, validate) | `part2-bvh` | `docs/03-bvh.md` |
+//! | 2 BVH | [`bvh`] (build, traverse, validate; `bvh::wide`, the fast one) | `part2-bvh` | `docs/03-bvh.md` |
 //! | 3 direct lighting | [`direct`] (hemisphere, light sampling) | `part3-direct` | `docs/04-direct.md` |
 //! | 4 global illumination | [`global`] (path tracing, Russian roulette) | `part4-global` | `docs/05-global.md` |
 //! | 5 adaptive sampling | [`adaptive`] | `part5-adaptive` | `docs/06-adaptive.md` |

@@ -1,14 +1,15 @@
-//! The BVH against the linear scan: the same closest hit (same primitive,
-//! same `t` to the bit: both run the same primitive test) on random rays
-//! over random scenes, built-in scenes and the course scenes; `occluded`
-//! agrees with `intersect`; `validate()` holds after every build,
-//! including degenerate inputs.
+//! Both BVHs (part 2's binary one and the wide SIMD one) against the
+//! linear scan: the same closest hit (same primitive, same `t` to the bit:
+//! all run the same primitive test) on random rays over random scenes,
+//! built-in scenes and the course scenes; `occluded` agrees with
+//! `intersect`; `validate()` holds after every build, including
+//! degenerate inputs.
 
 mod common;
 
 use common::*;
 use glam::Vec3;
-use pathtracer::bvh::BvhAccel;
+use pathtracer::bvh::{BvhAccel, WideBvhAccel};
 use pathtracer::intersect::{Aabb, Intersector, LinearScan, Primitives, Ray};
 use pathtracer::math::rng::{sampler, Sampler};
 use pathtracer::raygen::Camera;
@@ -19,7 +20,7 @@ use rand::Rng;
 /// The BVH finds the linear scan's closest hit. Where two primitives are
 /// hit at exactly the same `t` either may be reported (the scan keeps the
 /// last in id order, the BVH the last in traversal order).
-fn assert_same_closest(prims: &Primitives, bvh: &BvhAccel, ray: &Ray) {
+fn assert_same_closest(prims: &Primitives, bvh: &dyn Intersector, ray: &Ray) {
     let expected = LinearScan::new(prims).intersect(ray);
     let found = bvh.intersect(ray);
     match (expected, found) {
@@ -39,7 +40,7 @@ fn assert_same_closest(prims: &Primitives, bvh: &BvhAccel, ray: &Ray) {
 }
 
 /// `occluded` (BVH and linear scan) is "intersect finds something".
-fn assert_occlusion_agrees(prims: &Primitives, bvh: &BvhAccel, ray: &Ray) {
+fn assert_occlusion_agrees(prims: &Primitives, bvh: &dyn Intersector, ray: &Ray) {
     let linear = LinearScan::new(prims);
     let blocked = linear.intersect(ray).is_some();
     assert_eq!(bvh.occluded(ray), blocked, "BVH occluded along {ray:?}");
@@ -62,12 +63,31 @@ fn random_ray(rng: &mut Sampler, bounds: &Aabb) -> Ray {
     Ray::new(origin, (target - origin).normalize_or(Vec3::X))
 }
 
-/// Builds the BVH, validates it, and compares it with the linear scan on
-/// `rays` random rays (half of them also with a random finite `t_max` for
-/// the occlusion check).
-fn check_scene(prims: Primitives, rays: usize, seed: u64) -> BvhAccel {
-    let bvh = BvhAccel::new(prims.clone());
-    bvh.validate().expect("valid BVH");
+/// Both BVHs over `prims`, validated.
+struct Both {
+    binary: BvhAccel,
+    wide: WideBvhAccel,
+}
+
+impl Both {
+    fn new(prims: &Primitives) -> Self {
+        let binary = BvhAccel::new(prims.clone());
+        binary.validate().expect("valid BVH");
+        let wide = WideBvhAccel::new(prims.clone());
+        wide.validate().expect("valid wide BVH");
+        Both { binary, wide }
+    }
+
+    fn each(&self) -> [&dyn Intersector; 2] {
+        [&self.binary, &self.wide]
+    }
+}
+
+/// Builds both BVHs, validates them, and compares them with the linear
+/// scan on `rays` random rays (half of them also with a random finite
+/// `t_max` for the occlusion check).
+fn check_scene(prims: Primitives, rays: usize, seed: u64) -> Both {
+    let both = Both::new(&prims);
     let mut bounds = prims.bounds();
     if bounds.is_empty() {
         bounds = Aabb::from_points([-Vec3::ONE, Vec3::ONE]);
@@ -76,14 +96,18 @@ fn check_scene(prims: Primitives, rays: usize, seed: u64) -> BvhAccel {
     let mut rng = sampler(seed, 1);
     for i in 0..rays {
         let mut ray = random_ray(&mut rng, &bounds);
-        assert_same_closest(&prims, &bvh, &ray);
+        for bvh in both.each() {
+            assert_same_closest(&prims, bvh, &ray);
+        }
         if i % 2 == 0 {
             ray.t_max = rng.gen_range(0.0..3.0 * size.max(1e-3));
-            assert_same_closest(&prims, &bvh, &ray);
-            assert_occlusion_agrees(&prims, &bvh, &ray);
+            for bvh in both.each() {
+                assert_same_closest(&prims, bvh, &ray);
+                assert_occlusion_agrees(&prims, bvh, &ray);
+            }
         }
     }
-    bvh
+    both
 }
 
 /// A random scene of `triangles` triangles and `spheres` spheres, in one of
@@ -165,9 +189,11 @@ fn many_duplicates_stay_within_the_depth_limit() {
     let tri = [Vec3::ZERO, Vec3::X, Vec3::Y];
     let mut tris = vec![tri; 50_000];
     tris.extend([[Vec3::splat(3.0); 3]; 20_000]);
-    let bvh = check_scene(soup(&tris, &[]), 20, 6);
-    let (_, depth) = bvh.bvh.leaf_stats();
+    let both = check_scene(soup(&tris, &[]), 20, 6);
+    let (_, depth) = both.binary.bvh.leaf_stats();
     assert!(depth <= pathtracer::bvh::MAX_DEPTH, "depth {depth}");
+    let (_, wide_depth, _) = both.wide.wide.leaf_stats();
+    assert!(wide_depth <= depth, "wide depth {wide_depth}");
 }
 
 #[test]
@@ -180,19 +206,21 @@ fn bumpy_sphere_matches_linear_scan() {
 fn cornell_box_matches_linear_scan() {
     let scene = builtin::cornell_box();
     let prims = Primitives::from_scene(&scene);
-    let bvh = check_scene(prims.clone(), 2000, 9);
-    check_camera_rays(&scene, &prims, &bvh);
+    let both = check_scene(prims.clone(), 2000, 9);
+    check_camera_rays(&scene, &prims, &both);
 }
 
 /// The course camera's rays over a coarse grid agree too.
-fn check_camera_rays(scene: &Scene, prims: &Primitives, bvh: &BvhAccel) {
+fn check_camera_rays(scene: &Scene, prims: &Primitives, both: &Both) {
     let (width, height) = (64, 48);
     let camera = Camera::course_placement(&scene.camera, &prims.bounds(), width, height);
     for j in 0..height {
         for i in 0..width {
             let x = (i as f32 + 0.5) / width as f32;
             let y = (j as f32 + 0.5) / height as f32;
-            assert_same_closest(prims, bvh, &camera.ray(x, y));
+            for bvh in both.each() {
+                assert_same_closest(prims, bvh, &camera.ray(x, y));
+            }
         }
     }
 }
@@ -208,8 +236,8 @@ fn course_scenes_match_linear_scan() {
     for (index, path) in files.iter().enumerate() {
         let scene = pathtracer::scene::load(path).unwrap_or_else(|e| panic!("{e}"));
         let prims = Primitives::from_scene(&scene);
-        let bvh = check_scene(prims.clone(), 3000, 100 + index as u64);
-        check_camera_rays(&scene, &prims, &bvh);
+        let both = check_scene(prims.clone(), 3000, 100 + index as u64);
+        check_camera_rays(&scene, &prims, &both);
         println!("{}: {} primitives agree", path.display(), prims.len());
     }
 }
@@ -230,25 +258,28 @@ fn axis_parallel_rays_along_box_planes_agree_with_the_linear_scan() {
         }
     }
     let primitives = soup(&triangles, &[]);
-    let bvh = BvhAccel::new(primitives.clone());
-    bvh.validate().unwrap();
+    let both = Both::new(&primitives);
     let mut checked = 0;
     for i in 0..=16 {
         for j in 0..=16 {
             let (x, y) = (i as f32 * 0.5, j as f32 * 0.5);
             for dir in [Vec3::new(0.0, 0.0, -1.0), Vec3::new(-0.0, -0.0, -1.0)] {
                 let ray = Ray::new(Vec3::new(x, y, 5.0), dir);
-                assert!(
-                    bvh.intersect(&ray).is_some(),
-                    "the BVH missed the floor at ({x}, {y})"
-                );
-                assert_same_closest(&primitives, &bvh, &ray);
-                assert_occlusion_agrees(&primitives, &bvh, &ray);
+                for bvh in both.each() {
+                    assert!(
+                        bvh.intersect(&ray).is_some(),
+                        "a BVH missed the floor at ({x}, {y})"
+                    );
+                    assert_same_closest(&primitives, bvh, &ray);
+                    assert_occlusion_agrees(&primitives, bvh, &ray);
+                }
                 checked += 1;
             }
             // Above the floor, along a row of box planes.
             let along = Ray::new(Vec3::new(-1.0, y, 0.5), Vec3::new(1.0, 0.0, 0.0));
-            assert_same_closest(&primitives, &bvh, &along);
+            for bvh in both.each() {
+                assert_same_closest(&primitives, bvh, &along);
+            }
         }
     }
     assert_eq!(checked, 17 * 17 * 2);

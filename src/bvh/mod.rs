@@ -23,6 +23,9 @@
 //!   scale benchmark (build time, memory and ray rate from 10k to 10M
 //!   triangles).
 //! - [`BvhAccel`]: the BVH over a scene's primitives, an [`Intersector`](crate::intersect::Intersector).
+//! - [`wide`]: the fast version the renderers use, [`WideBvhAccel`]: the
+//!   same build collapsed to four children per node, with SIMD box and
+//!   triangle tests and the same hits.
 
 pub mod accel;
 mod binning;
@@ -33,10 +36,12 @@ pub mod scale;
 pub mod throughput;
 pub mod traverse;
 pub mod validate;
+pub mod wide;
 
 pub use accel::BvhAccel;
 pub use build::BuildOptions;
 pub use validate::ValidationError;
+pub use wide::WideBvhAccel;
 
 use glam::{Vec3, Vec4, Vec4Swizzles};
 

@@ -1,5 +1,6 @@
 //! The ray-throughput benchmark of `part2-bvh --bench`: three ray sets
-//! traced through a BVH over the 1,046,528-triangle bumpy sphere
+//! traced through a BVH (binary or wide: any [`Intersector`]) over the
+//! 1,046,528-triangle bumpy sphere
 //! ([`crate::scene::builtin::bumpy_sphere`]).
 //!
 //! - `primary`: a 1024 x 1024 pinhole camera at (0, 0.3, 3.2) looking at
@@ -21,7 +22,7 @@ use glam::Vec3;
 use rand::Rng;
 use rayon::prelude::*;
 
-use super::BvhAccel;
+use super::{BvhAccel, WideBvhAccel};
 use crate::intersect::{Intersector, Primitives, Ray};
 use crate::math::rng::{next_2d, sampler};
 use crate::math::warp::{sample_uniform_hemisphere, sample_uniform_sphere};
@@ -66,6 +67,20 @@ pub fn build_benchmark_bvh(phi_steps: u32, theta_steps: u32) -> (BvhAccel, f64) 
     (accel, start.elapsed().as_secs_f64())
 }
 
+/// Builds the benchmark's wide BVH ([`WideBvhAccel`]: the binary build,
+/// then its collapse); returns it with the times of both, in seconds.
+pub fn build_benchmark_wide(phi_steps: u32, theta_steps: u32) -> (WideBvhAccel, [f64; 2]) {
+    let primitives = Primitives::from_scene(&bumpy_sphere(phi_steps, theta_steps));
+    let start = Instant::now();
+    let bvh = super::build::build(
+        &super::accel::primitive_bounds(&primitives),
+        &super::BuildOptions::default(),
+    );
+    let binary = start.elapsed().as_secs_f64();
+    let accel = WideBvhAccel::from_binary(&bvh, primitives);
+    (accel, [binary, start.elapsed().as_secs_f64() - binary])
+}
+
 /// The benchmark camera's rays, `size x size` pixels in 8 x 8 tiles.
 pub fn primary_rays(size: u32) -> Vec<Ray> {
     let camera = Camera::look_at(Vec3::new(0.0, 0.3, 3.2), Vec3::ZERO, Vec3::Y, 45.0, 45.0);
@@ -96,7 +111,7 @@ pub fn random_rays(count: usize) -> Vec<Ray> {
 }
 
 /// One diffuse bounce from each primary ray's hit.
-pub fn diffuse_rays(accel: &BvhAccel, primary: &[Ray]) -> Vec<Ray> {
+pub fn diffuse_rays(accel: &impl Intersector, primary: &[Ray]) -> Vec<Ray> {
     primary
         .par_iter()
         .enumerate()
@@ -124,7 +139,7 @@ pub const RUNS: usize = 3;
 
 /// Traces `set` for the closest hit on a pool of `threads` threads,
 /// [`RUNS`] times; reports the fastest run.
-pub fn measure(accel: &BvhAccel, set: &RaySet, threads: usize) -> Measurement {
+pub fn measure(accel: &impl Intersector, set: &RaySet, threads: usize) -> Measurement {
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()
@@ -147,7 +162,7 @@ pub fn measure(accel: &BvhAccel, set: &RaySet, threads: usize) -> Measurement {
 }
 
 /// Number of hits and the sum of their distances.
-fn trace_all(accel: &BvhAccel, rays: &[Ray]) -> (usize, f64) {
+fn trace_all(accel: &impl Intersector, rays: &[Ray]) -> (usize, f64) {
     rays.par_chunks(4096)
         .map(|chunk| {
             chunk.iter().fold((0usize, 0.0f64), |(n, sum), ray| {
@@ -161,7 +176,7 @@ fn trace_all(accel: &BvhAccel, rays: &[Ray]) -> (usize, f64) {
 }
 
 /// The three ray sets of the benchmark for `accel`.
-pub fn ray_sets(accel: &BvhAccel, primary_size: u32, random_count: usize) -> Vec<RaySet> {
+pub fn ray_sets(accel: &impl Intersector, primary_size: u32, random_count: usize) -> Vec<RaySet> {
     let primary = primary_rays(primary_size);
     let diffuse = diffuse_rays(accel, &primary);
     vec![

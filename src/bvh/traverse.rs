@@ -40,7 +40,7 @@ impl Bvh {
             .hit_distance(ray.origin.into(), inv.into(), ray.t_min, t_max)?;
         let lanes = RayLanes::new(ray.origin, inv);
         let mut best = None;
-        let mut stack = Stack::new();
+        let mut stack: Stack<_> = Stack::new();
         loop {
             if link.is_leaf() {
                 for slot in link.slots() {
@@ -99,7 +99,7 @@ impl Bvh {
             return false;
         }
         let lanes = RayLanes::new(ray.origin, inv);
-        let mut stack = Stack::new();
+        let mut stack: Stack<_> = Stack::new();
         stack.push(root);
         while let Some(link) = stack.pop() {
             if link.is_leaf() {
@@ -120,34 +120,36 @@ impl Bvh {
     }
 }
 
-/// A fixed-capacity stack that is not zeroed when created: traversal
-/// starts one per ray, and clearing [`MAX_DEPTH`] entries each time showed
-/// up in profiles.
-struct Stack<T> {
-    items: [MaybeUninit<T>; MAX_DEPTH],
+/// A fixed-capacity stack (`N` entries, [`MAX_DEPTH`] unless given) that
+/// is not zeroed when created: traversal starts one per ray, and clearing
+/// [`MAX_DEPTH`] entries each time showed up in profiles. The wide BVH's
+/// traversal uses it too.
+pub(crate) struct Stack<T, const N: usize = MAX_DEPTH> {
+    items: [MaybeUninit<T>; N],
     len: usize,
 }
 
-impl<T: Copy> Stack<T> {
+impl<T: Copy, const N: usize> Stack<T, N> {
     #[inline(always)]
-    fn new() -> Self {
+    pub(crate) fn new() -> Self {
         Stack {
-            items: [const { MaybeUninit::uninit() }; MAX_DEPTH],
+            items: [const { MaybeUninit::uninit() }; N],
             len: 0,
         }
     }
 
     /// Pushes `item`. The BVH's depth is at most [`MAX_DEPTH`] (checked by
-    /// `validate`), and a traversal holds at most one entry per level, so
-    /// this never overflows; if it did, indexing would panic, not corrupt.
+    /// `validate`), and a traversal holds at most one entry per level (the
+    /// wide BVH: three), so this never overflows; if it did, indexing
+    /// would panic, not corrupt.
     #[inline(always)]
-    fn push(&mut self, item: T) {
+    pub(crate) fn push(&mut self, item: T) {
         self.items[self.len].write(item);
         self.len += 1;
     }
 
     #[inline(always)]
-    fn pop(&mut self) -> Option<T> {
+    pub(crate) fn pop(&mut self) -> Option<T> {
         self.len = self.len.checked_sub(1)?;
         // SAFETY: every slot below the old `len` was written by `push`.
         Some(unsafe { self.items[self.len].assume_init() })

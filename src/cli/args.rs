@@ -11,7 +11,7 @@ use crate::lights::LightConvention;
 use crate::materials::{BsdfOptions, FresnelModel};
 
 use super::values::{non_negative, positive};
-pub use super::values::{Builtin, LightChoiceArg, MicrofacetSamplingArg};
+pub use super::values::{AccelArg, Builtin, LightChoiceArg, MicrofacetSamplingArg};
 use crate::render::RenderSettings;
 use crate::scene::{Scene, SceneError};
 use crate::world::WorldOptions;
@@ -202,6 +202,11 @@ pub struct BvhArgs {
     /// Print build time and ray rates against triangle count, as a table.
     #[arg(long)]
     pub scaling: bool,
+
+    /// The BVH `--bench` traces: the four-wide SIMD one the renderers use,
+    /// or part 2's binary one.
+    #[arg(long, value_enum, default_value_t)]
+    pub accel: AccelArg,
 }
 
 impl CourseArgs {

@@ -22,6 +22,16 @@ pub fn positive(s: &str) -> Result<f32, String> {
     }
 }
 
+/// `part2-bvh --accel`: which BVH the benchmark traces.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum AccelArg {
+    /// Part 2's binary BVH ([`crate::bvh::BvhAccel`]), the teaching version.
+    Binary,
+    /// The four-wide SIMD BVH ([`crate::bvh::WideBvhAccel`]) the renderers use.
+    #[default]
+    Wide,
+}
+
 /// `--microfacet-sampling`: the command line's names of
 /// [`MicrofacetSampling`] (kept here so that the library needs no clap).
 #[derive(clap::ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]

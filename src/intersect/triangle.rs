@@ -56,7 +56,7 @@ pub struct TriangleHit {
 
 /// Index of the largest component of `v`.
 #[inline(always)]
-fn max_axis(v: Vec3) -> usize {
+pub(crate) fn max_axis(v: Vec3) -> usize {
     if v.x > v.y {
         if v.x > v.z {
             0
@@ -73,7 +73,7 @@ fn max_axis(v: Vec3) -> usize {
 /// `a b - c d` in `f32`; recomputed in `f64` when the `f32` result is
 /// exactly zero, so a ray through an edge or vertex gets the right sign.
 #[inline(always)]
-fn edge_function(a: f32, b: f32, c: f32, d: f32) -> f32 {
+pub(crate) fn edge_function(a: f32, b: f32, c: f32, d: f32) -> f32 {
     let e = a * b - c * d;
     if e == 0.0 {
         (f64::from(a) * f64::from(b) - f64::from(c) * f64::from(d)) as f32

@@ -8,6 +8,7 @@ pub mod distribution;
 pub mod float;
 pub mod frame;
 pub mod mis;
+pub mod prefetch;
 pub mod rng;
 pub mod warp;
 

@@ -5,6 +5,7 @@ use std::time::Instant;
 
 use super::{describe_or, prepare, report_render, write_film, Result};
 use crate::bvh::BvhAccel;
+use crate::cli::args::AccelArg;
 use crate::cli::CourseArgs;
 use crate::intersect::{Intersector, LinearScan, Ray, TriangleTest};
 use crate::raygen::{Camera, NormalShading};
@@ -121,26 +122,53 @@ pub fn measure_speedup(accel: &BvhAccel, camera: &Camera, settings: &RenderSetti
     }
 }
 
-/// `part2-bvh --bench [-t N]`: the ray-throughput benchmark
-/// ([`crate::bvh::throughput`]): one thread, then `threads` (default: all cores).
-pub fn bvh_benchmark(threads: Option<usize>) -> Result<()> {
-    use crate::bvh::throughput::{build_benchmark_bvh, measure, ray_sets};
-    let (accel, build) = build_benchmark_bvh(1024, 512);
-    let (leaves, depth) = accel.bvh.leaf_stats();
-    println!("build {build:.3} s");
-    println!(
-        "triangles {} nodes {} leaves {leaves} depth {depth}",
-        accel.primitives.len(),
-        accel.bvh.nodes.len()
-    );
-    let all = threads.unwrap_or_else(rayon::current_num_threads);
-    let counts = if all > 1 { vec![1, all] } else { vec![1] };
-    for set in &ray_sets(&accel, 1024, 1 << 20) {
-        for &t in &counts {
-            println!("{}", measure(&accel, set, t));
+/// `part2-bvh --bench [-t N] [--accel A]`: the ray-throughput benchmark
+/// ([`crate::bvh::throughput`]) on BVH `accel`: one thread, then `threads`
+/// (default: all cores).
+pub fn bvh_benchmark(threads: Option<usize>, accel: AccelArg) -> Result<()> {
+    use crate::bvh::throughput::{build_benchmark_bvh, build_benchmark_wide};
+    match accel {
+        AccelArg::Binary => {
+            let (accel, build) = build_benchmark_bvh(1024, 512);
+            let (leaves, depth) = accel.bvh.leaf_stats();
+            println!("binary BVH: build {build:.3} s");
+            println!(
+                "triangles {} nodes {} leaves {leaves} depth {depth}",
+                accel.primitives.len(),
+                accel.bvh.nodes.len()
+            );
+            trace_benchmark_sets(&accel, threads);
+        }
+        AccelArg::Wide => {
+            let (accel, [binary, collapse]) = build_benchmark_wide(1024, 512);
+            let (leaves, depth, lanes) = accel.wide.leaf_stats();
+            println!(
+                "wide BVH: build {:.3} s (binary SAH build {binary:.3} s, collapse {collapse:.3} s)",
+                binary + collapse
+            );
+            println!(
+                "triangles {} nodes {} leaves {leaves} depth {depth} packs {} lanes used {:.1} %",
+                accel.primitives.len(),
+                accel.wide.nodes.len(),
+                accel.wide.packs.len(),
+                100.0 * lanes as f64 / (4 * accel.wide.packs.len()).max(1) as f64
+            );
+            trace_benchmark_sets(&accel, threads);
         }
     }
     Ok(())
+}
+
+/// The benchmark's ray sets through `accel`, one thread, then `threads`.
+fn trace_benchmark_sets(accel: &impl Intersector, threads: Option<usize>) {
+    use crate::bvh::throughput::{measure, ray_sets};
+    let all = threads.unwrap_or_else(rayon::current_num_threads);
+    let counts = if all > 1 { vec![1, all] } else { vec![1] };
+    for set in &ray_sets(accel, 1024, 1 << 20) {
+        for &t in &counts {
+            println!("{}", measure(accel, set, t));
+        }
+    }
 }
 
 /// `part2-bvh --scaling`: build time and one-thread ray rates of the

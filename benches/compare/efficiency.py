@@ -1,0 +1,145 @@
+#!/usr/bin/env python3
+"""Rendering efficiency of this project against Mitsuba 3, in one run.
+
+Efficiency is 1 / (MSE x render time) at equal samples per pixel. Both
+renderers are unbiased (checked: the last column), so a render's MSE is its
+variance, estimated without a reference from two renders with different
+seeds: for independent estimates X1, X2 of the same image,
+
+    E[(X1 - X2)^2] / 2 = Var[X]      (per pixel and channel, averaged)
+
+which needs no converged reference and has no reference noise in it. With a
+scrambled low-discrepancy sampler, different seeds are independent
+randomisations, so the same identity holds.
+
+For each scene and repetition: this project renders twice (`--seed 0`,
+`--seed 1`; time from its `render: S s` line, which excludes loading and
+the BVH build), then Mitsuba renders seeds 0 and 1 in one process
+(`benches/compare/mitsuba_timed.py`; time of the second render, with its
+kernels compiled). Times are medians over repetitions; the machine is
+shared, so only ratios from one run mean anything.
+
+The last column compares the two renderers' mean radiance over the pixels
+whose luminance is below 1 in both (leaving out the emitters, which the
+course shows as its quad and Mitsuba as the light's own rectangle).
+
+Needs Python with numpy and mitsuba (a venv: `pip install mitsuba numpy`,
+and `apt-get install -y libllvm19`), the Mitsuba tool
+`../shared/tools/mitsuba/dae_reference.py` (outside this repository), and
+`cargo build --release`. For the environment-lit scene, the studio map:
+`cargo run --release --example environment_map -- --hdr studio.hdr`.
+
+    python3 benches/compare/efficiency.py [--reps 3] [--only CBbunny ...] [-- EXTRA PATHTRACER FLAGS]
+"""
+import argparse
+import os
+import re
+import statistics
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
+
+# name: (course file, course depth -m, environment map or None)
+SCENES = {
+    "CBspheres_lambertian": ("CBspheres_lambertian.dae", 8, None),
+    "CBbunny": ("CBbunny.dae", 5, None),
+    "CBspheres_microfacet_al_ag": ("CBspheres_microfacet_al_ag.dae", 5, None),
+    "bunny_unlit+studio": ("bunny_unlit.dae", 5, "studio.hdr"),
+}
+
+
+def run(cmd, log):
+    """Runs `cmd`, appends its output to `log`, returns stdout."""
+    result = subprocess.run(cmd, capture_output=True, text=True)
+    with open(log, "a") as f:
+        f.write("$ " + " ".join(cmd) + "\n" + result.stdout + result.stderr + "\n")
+    if result.returncode != 0:
+        sys.exit(f"failed ({result.returncode}): {' '.join(cmd)}\n{result.stderr}")
+    return result.stdout
+
+
+def read_rgb(path):
+    import mitsuba as mi
+    import numpy as np
+
+    bitmap = mi.Bitmap(path).convert(mi.Bitmap.PixelFormat.RGB, mi.Struct.Type.Float32)
+    return np.array(bitmap, dtype=np.float64)
+
+
+def variance(a, b):
+    """Per-render variance from two independent renders: mean of (a - b)^2 / 2."""
+    return float(((a - b) ** 2).mean() / 2)
+
+
+def luminance(rgb):
+    return rgb @ [0.2126, 0.7152, 0.0722]
+
+
+def main():
+    extra = []
+    if "--" in sys.argv:
+        cut = sys.argv.index("--")
+        sys.argv, extra = sys.argv[:cut], sys.argv[cut + 1:]
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--scenes", default=os.environ.get("CS184_SCENES",
+                    os.path.join(ROOT, "..", "shared", "scenes", "cs184")))
+    ap.add_argument("--tool", default=os.path.join(ROOT, "..", "shared", "tools", "mitsuba",
+                                                    "dae_reference.py"))
+    ap.add_argument("--pathtracer", default=os.path.join(ROOT, "target", "release", "pathtracer"))
+    ap.add_argument("--env-map", default="studio.hdr")
+    ap.add_argument("--size", type=int, nargs=2, default=[480, 360])
+    ap.add_argument("--spp", type=int, default=64)
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--reps", type=int, default=3)
+    ap.add_argument("--only", nargs="*", choices=sorted(SCENES))
+    ap.add_argument("--out", default="efficiency-out")
+    a = ap.parse_args()
+    os.makedirs(a.out, exist_ok=True)
+    log = os.path.join(a.out, "log.txt")
+    w, h = a.size
+    print(f"{w}x{h}, {a.spp} spp, -t {a.threads}, {a.reps} repetitions; our extra flags: {extra}")
+    print("| scene | ours: time (s) | ours: MSE | Mitsuba: time (s) | Mitsuba: MSE "
+          "| efficiency ours/Mitsuba | mean ours/Mitsuba |")
+    print("| --- | ---: | ---: | ---: | ---: | ---: | ---: |")
+    for name in a.only or SCENES:
+        file, depth, env = SCENES[name]
+        scene = os.path.join(a.scenes, file)
+        if env and not os.path.exists(a.env_map):
+            sys.exit(f"{a.env_map} not found: cargo run --release --example environment_map -- --hdr {a.env_map}")
+        ours_t, mi_t = [], []
+        for rep in range(a.reps):
+            images = []
+            for seed in (0, 1):
+                path = os.path.join(a.out, f"{name}-ours-{seed}.exr")
+                cmd = [a.pathtracer, scene, "-r", str(w), str(h), "-s", str(a.spp), "-l", "1",
+                       "-m", str(depth), "-t", str(a.threads), "--seed", str(seed), "-f", path]
+                cmd += ["-e", a.env_map] if env else []
+                out = run(cmd + extra, log)
+                ours_t.append(float(re.search(r"render: ([0-9.]+) s", out).group(1)))
+                images.append(path)
+            last = os.path.join(a.out, f"{name}-mitsuba-1.exr")
+            cmd = [sys.executable, os.path.join(HERE, "mitsuba_timed.py"), a.tool, last, "--",
+                   scene, os.path.join(a.out, f"{name}-mitsuba-avg.exr"), "--size", str(w), str(h),
+                   "--spp", str(a.spp), "--seeds", "2", "--m", str(depth)]
+            cmd += ["--env", a.env_map] if env else []
+            out = run(cmd, log)
+            mi_t.append(float(re.findall(r"mitsuba render 2: ([0-9.]+) s", out)[-1]))
+        ours = [read_rgb(p) for p in images]
+        # The tool's output is the mean of seeds 0 and 1; with seed 1 that gives seed 0.
+        mi_avg = read_rgb(os.path.join(a.out, f"{name}-mitsuba-avg.exr"))
+        mi_1 = read_rgb(last)
+        mitsuba = [2 * mi_avg - mi_1, mi_1]
+        ours_var, mi_var = variance(*ours), variance(*mitsuba)
+        t_ours, t_mi = statistics.median(ours_t), statistics.median(mi_t)
+        ratio = (1 / (ours_var * t_ours)) / (1 / (mi_var * t_mi))
+        ours_mean, mi_mean = (ours[0] + ours[1]) / 2, mi_avg
+        mask = (luminance(ours_mean) < 1) & (luminance(mi_mean) < 1)
+        bias = luminance(ours_mean)[mask].mean() / luminance(mi_mean)[mask].mean()
+        print(f"| {name} (m={depth}) | {t_ours:.2f} | {ours_var:.3e} | {t_mi:.2f} | {mi_var:.3e} "
+              f"| {ratio:.2f} | {bias:.4f} |", flush=True)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,151 @@
+//! The wide BVH as an [`Intersector`]: the binary SAH build
+//! ([`crate::bvh::build`]), collapsed to four children per node
+//! ([`super::collapse`]), with its triangles in SIMD packs.
+//!
+//! Triangles go through the lane-wise watertight test; spheres (and every
+//! triangle, if [`TriangleTest::MollerTrumbore`] is chosen) through the
+//! scalar [`Shape::intersect_with`], so the hits are those of
+//! [`BvhAccel`](crate::bvh::BvhAccel) and of the linear scan. The hit
+//! record is finished by [`Primitives::finish_hit`], as they do.
+
+use super::collapse::collapse;
+use super::leaf::{RayShear, TrianglePack};
+use super::{WideBvh, WideLink};
+use crate::bvh::accel::primitive_bounds;
+use crate::bvh::build::{build, BuildOptions};
+use crate::bvh::{Bvh, ValidationError};
+use crate::intersect::{Hit, Intersector, Primitives, Ray, Shape, ShapeHit, TriangleTest};
+
+/// A four-wide BVH over a scene's primitives.
+pub struct WideBvhAccel {
+    pub wide: WideBvh,
+    pub primitives: Primitives,
+}
+
+impl WideBvhAccel {
+    /// Builds the binary BVH with the default SAH options and collapses it.
+    pub fn new(primitives: Primitives) -> Self {
+        Self::with_options(primitives, &BuildOptions::default())
+    }
+
+    pub fn with_options(primitives: Primitives, options: &BuildOptions) -> Self {
+        let bvh = build(&primitive_bounds(&primitives), options);
+        Self::from_binary(&bvh, primitives)
+    }
+
+    /// Collapses a binary BVH built over `primitives` (by [`build`]).
+    pub fn from_binary(bvh: &Bvh, primitives: Primitives) -> Self {
+        WideBvhAccel {
+            wide: collapse(bvh, &primitives.shapes),
+            primitives,
+        }
+    }
+
+    /// Checks the tree against the primitives.
+    pub fn validate(&self) -> Result<(), ValidationError> {
+        self.wide.validate(&self.primitives.shapes)
+    }
+
+    /// Lanes of `pack` that the SIMD test does not cover, by the scalar
+    /// test: spheres, and triangles too when `simd` is false.
+    #[inline(never)]
+    fn scalar_lanes(
+        &self,
+        pack: &TrianglePack,
+        ray: &Ray,
+        mut t_max: f32,
+        simd: bool,
+    ) -> Option<(usize, ShapeHit)> {
+        let mut best = None;
+        for lane in 0..pack.ids.len() {
+            let Some((id, sphere)) = pack.lane(lane) else {
+                continue;
+            };
+            if simd && !sphere {
+                continue;
+            }
+            let shape = &self.primitives.shapes[id as usize];
+            if let Some(hit) = shape.intersect_with(ray, t_max, self.primitives.triangle_test) {
+                t_max = hit.t;
+                best = Some((lane, hit));
+            }
+        }
+        best
+    }
+
+    /// The nearest hit in a leaf within `[ray.t_min, t_max]`: its pack,
+    /// lane and hit.
+    #[inline(always)]
+    fn leaf_hit(
+        &self,
+        link: WideLink,
+        ray: &Ray,
+        shear: &RayShear,
+        mut t_max: f32,
+    ) -> Option<LaneHit> {
+        let simd = self.primitives.triangle_test == TriangleTest::Watertight;
+        let mut best = None;
+        for index in link.packs() {
+            let pack = &self.wide.packs[index];
+            if simd {
+                if let Some((lane, h)) = pack.intersect(shear, t_max) {
+                    t_max = h.t;
+                    let hit = ShapeHit {
+                        t: h.t,
+                        u: h.u,
+                        v: h.v,
+                    };
+                    best = Some(LaneHit { index, lane, hit });
+                }
+            }
+            if !simd || link.has_spheres() {
+                if let Some((lane, hit)) = self.scalar_lanes(pack, ray, t_max, simd) {
+                    t_max = hit.t;
+                    best = Some(LaneHit { index, lane, hit });
+                }
+            }
+        }
+        best
+    }
+}
+
+/// A hit in lane `lane` of pack `index`.
+#[derive(Clone, Copy)]
+struct LaneHit {
+    index: usize,
+    lane: usize,
+    hit: ShapeHit,
+}
+
+impl Intersector for WideBvhAccel {
+    fn intersect(&self, ray: &Ray) -> Option<Hit> {
+        let shear = RayShear::new(ray);
+        let mut best = None;
+        self.wide.closest_hit(ray, |link, t_max| {
+            let found = self.leaf_hit(link, ray, &shear, t_max)?;
+            if let Some((id, _)) = self.wide.packs[found.index].lane(found.lane) {
+                self.primitives.prefetch_shading(id);
+            }
+            best = Some(found);
+            Some(found.hit.t)
+        });
+        let LaneHit { index, lane, hit } = best?;
+        // The triangle from the pack, just read, rather than from
+        // `primitives.shapes`, which would be one more cache miss.
+        let pack = &self.wide.packs[index];
+        let (id, sphere) = pack.lane(lane)?;
+        let shape = if sphere {
+            self.primitives.shapes[id as usize]
+        } else {
+            Shape::Triangle(pack.triangle(lane))
+        };
+        Some(self.primitives.finish_hit(id, &shape, ray, hit))
+    }
+
+    fn occluded(&self, ray: &Ray) -> bool {
+        let shear = RayShear::new(ray);
+        self.wide.any_hit(ray, |link| {
+            self.leaf_hit(link, ray, &shear, ray.t_max).is_some()
+        })
+    }
+}

@@ -1,0 +1,170 @@
+//! The wide tree from the binary one (Wald, Benthin and Boulos 2008,
+//! section 3; Dammertz et al. 2008 collapse the same way).
+//!
+//! A wide node starts from a binary node's two children. While it has
+//! fewer than four, the interior child with the largest surface area is
+//! replaced by its own two children: by the surface area heuristic the
+//! largest box is the one a ray most likely enters, so opening it saves
+//! the most node visits. Leaves stay leaves; each becomes ceil(n / 4)
+//! triangle packs. The binary build's leaves hold at most 8 primitives,
+//! so a leaf has at most two packs.
+//!
+//! Nodes are written depth first, a node before its children, like the
+//! binary tree. Collapsing never adds levels, so the depth limit of the
+//! binary tree holds for the wide one.
+
+use super::leaf::TrianglePack;
+use super::node::WideNode;
+use super::{WideBvh, WideLink, WIDTH};
+use crate::bvh::{Bvh, Link};
+use glam::Vec3;
+
+use crate::intersect::triangle::TriangleShape;
+use crate::intersect::{Aabb, Shape};
+
+/// Binary subtrees of at most this many primitives become one leaf.
+pub const MERGE: usize = 3 * WIDTH;
+
+/// The wide BVH over the same primitives as `bvh`; `shapes[id]` is
+/// primitive `id`'s shape.
+pub fn collapse(bvh: &Bvh, shapes: &[Shape]) -> WideBvh {
+    let mut out = Collapser {
+        bvh,
+        shapes,
+        sizes: subtree_sizes(bvh),
+        scratch: Vec::new(),
+        // Upper bounds (a wide node takes at least one binary node, a pack
+        // at least one primitive), so the vectors never grow and copy;
+        // only the pages written are ever backed by memory.
+        nodes: Vec::with_capacity(bvh.nodes.len()),
+        packs: Vec::with_capacity(shapes.len()),
+    };
+    let root = bvh.root.map(|root| out.link(root));
+    WideBvh {
+        bounds: bvh.bounds,
+        root,
+        nodes: out.nodes,
+        packs: out.packs,
+    }
+}
+
+/// Number of primitives under each binary node.
+fn subtree_sizes(bvh: &Bvh) -> Vec<u32> {
+    let mut sizes = vec![0u32; bvh.nodes.len()];
+    // Children come after their parent, so a reverse sweep sees them first.
+    for index in (0..bvh.nodes.len()).rev() {
+        sizes[index] = bvh.nodes[index]
+            .children
+            .iter()
+            .map(|c| {
+                if c.is_leaf() {
+                    c.count
+                } else {
+                    sizes[c.first as usize]
+                }
+            })
+            .sum();
+    }
+    sizes
+}
+
+struct Collapser<'a> {
+    bvh: &'a Bvh,
+    shapes: &'a [Shape],
+    sizes: Vec<u32>,
+    /// Reused list of a leaf's slots.
+    scratch: Vec<u32>,
+    nodes: Vec<WideNode>,
+    packs: Vec<TrianglePack>,
+}
+
+impl Collapser<'_> {
+    /// Whether `link` becomes a leaf: a binary leaf, or a small subtree.
+    fn becomes_leaf(&self, link: Link) -> bool {
+        link.is_leaf() || self.sizes[link.first as usize] as usize <= MERGE
+    }
+
+    fn link(&mut self, link: Link) -> WideLink {
+        if self.becomes_leaf(link) {
+            self.leaf(link)
+        } else {
+            self.node(link.first as usize)
+        }
+    }
+
+    /// The leaf slots of the binary subtree `link`, in order.
+    fn slots(&self, link: Link, out: &mut Vec<u32>) {
+        if link.is_leaf() {
+            out.extend(link.slots());
+        } else {
+            for &child in &self.bvh.nodes[link.first as usize].children {
+                self.slots(child, out);
+            }
+        }
+    }
+
+    /// The wide node for binary node `index`, and its subtrees.
+    fn node(&mut self, index: usize) -> WideLink {
+        let binary = &self.bvh.nodes[index];
+        let mut children = [(Aabb::EMPTY, Link::default()); WIDTH];
+        children[0] = (binary.child_bounds(0), binary.children[0]);
+        children[1] = (binary.child_bounds(1), binary.children[1]);
+        let mut n = 2;
+        while n < WIDTH {
+            // The interior child with the largest surface area, if any.
+            let open = (0..n)
+                .filter(|&i| !self.becomes_leaf(children[i].1))
+                .max_by(|&a, &b| {
+                    let area = |i: usize| children[i].0.surface_area();
+                    area(a).total_cmp(&area(b))
+                });
+            let Some(i) = open else { break };
+            let grand = &self.bvh.nodes[children[i].1.first as usize];
+            children[i] = (grand.child_bounds(0), grand.children[0]);
+            children[n] = (grand.child_bounds(1), grand.children[1]);
+            n += 1;
+        }
+        let me = self.nodes.len();
+        self.nodes.push(WideNode::new(&[]));
+        let mut wide = [(Aabb::EMPTY, WideLink::EMPTY); WIDTH];
+        for (slot, &(bounds, link)) in wide.iter_mut().zip(&children[..n]) {
+            *slot = (bounds, self.link(link));
+        }
+        self.nodes[me] = WideNode::new(&wide[..n]);
+        WideLink {
+            first: me as u32,
+            count: 0,
+        }
+    }
+
+    /// The primitives of a binary subtree (a leaf, or a subtree of at most
+    /// four), four to a pack.
+    fn leaf(&mut self, link: Link) -> WideLink {
+        let first = self.packs.len();
+        let mut has_spheres = false;
+        let mut slots = std::mem::take(&mut self.scratch);
+        slots.clear();
+        self.slots(link, &mut slots);
+        for chunk in slots.chunks(WIDTH) {
+            let unused = Shape::Triangle(TriangleShape::new(Vec3::ZERO, Vec3::ZERO, Vec3::ZERO));
+            let mut lanes = [(0, unused); WIDTH];
+            for (lane, &slot) in lanes.iter_mut().zip(chunk) {
+                let id = self.bvh.order[slot as usize];
+                let shape = self.shapes[id as usize];
+                has_spheres |= matches!(shape, Shape::Sphere(_));
+                *lane = (id, shape);
+            }
+            self.packs.push(TrianglePack::new(&lanes[..chunk.len()]));
+        }
+        self.scratch = slots;
+        let count = (self.packs.len() - first) as u32;
+        WideLink {
+            first: first as u32,
+            count: if has_spheres {
+                count | WideLink::HAS_SPHERES
+            } else {
+                count
+            },
+        }
+    }
+}

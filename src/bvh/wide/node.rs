@@ -1,0 +1,177 @@
+//! A wide node and the slab test of one ray against its four child boxes.
+//!
+//! Layout: `planes[a]` holds the four children's minima along axis `a`
+//! (lane `i` is child `i`), `planes[3 + a]` their maxima; then the four
+//! links. 6 x 16 + 4 x 8 = 128 bytes, two cache lines.
+//!
+//! The slab test (Kay and Kajiya 1986, as in [`crate::intersect::Aabb`]),
+//! with the near and far planes chosen once per ray by the sign of the
+//! direction, so no min/max is needed per axis:
+//!
+//! ```text
+//! near_a = (planes[near(a)] - o_a) / d_a      near(a) = a if d_a >= +0, else 3 + a
+//! far_a  = (planes[far(a)]  - o_a) / d_a      far(a)  = the other one
+//! enter  = max(t_min, near_x, near_y, near_z)
+//! exit   = min(t_max, (1 + 2 gamma(3)) min(far_x, far_y, far_z))
+//! hit    <=> enter <= exit
+//! ```
+//!
+//! The factor `1 + 2 gamma(3)` keeps the test conservative under rounding
+//! (pbrt-v4, section 6.8.2); multiplying the minimum once equals
+//! multiplying each far distance, since rounding is monotonic.
+//!
+//! An unused slot has the empty box (`min = +inf`, `max = -inf`): with
+//! planes ordered by the direction's sign its near distance is `+inf` and
+//! its far one `-inf` on every axis, so no ray enters it.
+//!
+//! A ray that does not move along an axis (`d_a = ±0`, `1/d_a = ±inf`)
+//! and starts exactly on a plane gets `0 · inf = NaN` there. It lies in
+//! that slab, so a NaN near distance becomes `-inf` and a NaN far one
+//! `+inf`. Only rays with a zero direction component can meet this, and
+//! only they pay for the check. (Tried instead: `1/d = ±f32::MAX` for a
+//! zero component, which avoids the NaN, but a ray starting exactly on a
+//! box's far plane then gets a far distance of 0 instead of +inf and
+//! misses the box: the unit test below caught it.)
+
+use glam::{Vec3, Vec4};
+
+use super::{WideLink, WIDTH};
+use crate::intersect::Aabb;
+use crate::math::float::gamma;
+
+/// An interior node of the wide BVH: its children's boxes, plane by plane,
+/// and the links to them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[repr(C, align(64))]
+pub struct WideNode {
+    /// `[min x, min y, min z, max x, max y, max z]`, lane `i` for child `i`.
+    pub planes: [Vec4; 6],
+    pub children: [WideLink; WIDTH],
+}
+
+/// A ray prepared for box tests: origin and inverse direction splatted
+/// across the lanes, and which plane of each axis is entered first.
+#[derive(Clone, Copy, Debug)]
+pub struct RayBoxes {
+    origin: [Vec4; 3],
+    inv_dir: [Vec4; 3],
+    near: [usize; 3],
+    far: [usize; 3],
+    has_zero_direction: bool,
+    pub t_min: f32,
+}
+
+impl RayBoxes {
+    /// `dir` need not be normalised; a component may be ±0.
+    pub fn new(origin: Vec3, dir: Vec3, t_min: f32) -> Self {
+        let inv = Vec3::ONE / dir;
+        let near = [0, 1, 2].map(|a| if dir[a].is_sign_negative() { 3 + a } else { a });
+        RayBoxes {
+            origin: [origin.x, origin.y, origin.z].map(Vec4::splat),
+            inv_dir: [inv.x, inv.y, inv.z].map(Vec4::splat),
+            near,
+            far: near.map(|p| (p + 3) % 6),
+            has_zero_direction: !inv.is_finite(),
+            t_min,
+        }
+    }
+}
+
+impl WideNode {
+    /// A node over up to four children; missing slots are left empty.
+    pub fn new(children: &[(Aabb, WideLink)]) -> Self {
+        assert!(children.len() <= WIDTH, "at most {WIDTH} children");
+        let mut boxes = [Aabb::EMPTY; WIDTH];
+        let mut links = [WideLink::EMPTY; WIDTH];
+        for (i, &(b, l)) in children.iter().enumerate() {
+            boxes[i] = b;
+            links[i] = l;
+        }
+        let lanes = |f: &dyn Fn(&Aabb) -> f32| Vec4::from_array(boxes.each_ref().map(f));
+        WideNode {
+            planes: [
+                lanes(&|b| b.min.x),
+                lanes(&|b| b.min.y),
+                lanes(&|b| b.min.z),
+                lanes(&|b| b.max.x),
+                lanes(&|b| b.max.y),
+                lanes(&|b| b.max.z),
+            ],
+            children: links,
+        }
+    }
+
+    /// The box of child `i`.
+    pub fn child_bounds(&self, i: usize) -> Aabb {
+        let p = self.planes.map(|v| v.to_array()[i]);
+        Aabb {
+            min: Vec3::new(p[0], p[1], p[2]),
+            max: Vec3::new(p[3], p[4], p[5]),
+        }
+    }
+
+    /// Which children the ray meets within `[ray.t_min, t_max]` (bit `i`
+    /// for child `i`) and the entry distance into each (valid for those).
+    #[inline(always)]
+    pub fn hit(&self, ray: &RayBoxes, t_max: f32) -> (u32, Vec4) {
+        let mut enter = Vec4::splat(ray.t_min);
+        let mut exit = Vec4::INFINITY;
+        for a in 0..3 {
+            let mut near = (self.planes[ray.near[a]] - ray.origin[a]) * ray.inv_dir[a];
+            let mut far = (self.planes[ray.far[a]] - ray.origin[a]) * ray.inv_dir[a];
+            if ray.has_zero_direction {
+                near = Vec4::select(near.is_nan_mask(), Vec4::NEG_INFINITY, near);
+                far = Vec4::select(far.is_nan_mask(), Vec4::INFINITY, far);
+            }
+            enter = enter.max(near);
+            exit = exit.min(far);
+        }
+        let exit = (exit * (1.0 + 2.0 * gamma(3))).min(Vec4::splat(t_max));
+        (enter.cmple(exit).bitmask(), enter)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_node_is_two_cache_lines() {
+        assert_eq!(std::mem::size_of::<WideNode>(), 128);
+        assert_eq!(std::mem::align_of::<WideNode>(), 64);
+    }
+
+    /// Four boxes along x; rays from the left, the right, along a face
+    /// (zero direction components of both signs), and one missing all.
+    #[test]
+    fn slab_test_agrees_with_the_box_test() {
+        let boxes: Vec<Aabb> = (0..3)
+            .map(|i| {
+                let x = 2.0 * i as f32;
+                Aabb::from_points([Vec3::new(x, 0.0, 0.0), Vec3::new(x + 1.0, 1.0, 1.0)])
+            })
+            .collect();
+        let children: Vec<(Aabb, WideLink)> =
+            boxes.iter().map(|&b| (b, WideLink::default())).collect();
+        let node = WideNode::new(&children);
+        let origins = [
+            Vec3::new(-1.0, 0.5, 0.5),
+            Vec3::new(9.0, 0.5, 0.5),
+            Vec3::new(-1.0, 1.0, 0.0),
+            Vec3::new(-1.0, 2.0, 0.5),
+        ];
+        for origin in origins {
+            for dir in [Vec3::X, -Vec3::X, Vec3::new(1.0, -0.0, 0.0)] {
+                let ray = RayBoxes::new(origin, dir, 0.0);
+                let (mask, enter) = node.hit(&ray, f32::INFINITY);
+                assert_eq!(mask & 8, 0, "the empty slot is never entered");
+                for (i, b) in boxes.iter().enumerate() {
+                    let expected =
+                        b.hit_distance(origin.into(), (Vec3::ONE / dir).into(), 0.0, f32::INFINITY);
+                    let found = (mask >> i & 1 != 0).then(|| enter.to_array()[i]);
+                    assert_eq!(found, expected, "box {i} from {origin} along {dir}");
+                }
+            }
+        }
+    }
+}
