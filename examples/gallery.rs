@@ -21,7 +21,7 @@ use pathtracer::cli::args::Builtin;
 use pathtracer::cli::drivers::lighting::direct_strategy;
 use pathtracer::cli::drivers::{prepare, render_lighting, Prepared};
 use pathtracer::cli::CourseArgs;
-use pathtracer::global::PathTracer;
+use pathtracer::global::{PathTracer, Roulette};
 use pathtracer::math::Rgb;
 use pathtracer::scene::Material;
 use pathtracer::world::World;
@@ -126,7 +126,7 @@ fn run(args: &[String]) -> Result<(), Box<dyn Error>> {
         direct: direct_strategy(&course, &scene),
         max_depth: course.max_depth(),
         accumulate: course.accumulate == 1,
-        russian_roulette: true,
+        roulette: Roulette::Fixed,
     };
     let settings = course.render_settings();
     let rendered = render_lighting(&world, &tracer, &camera, &settings, None);

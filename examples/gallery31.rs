@@ -29,12 +29,13 @@ use pathtracer::bvh::BvhAccel;
 use pathtracer::cli::drivers::render_lighting;
 use pathtracer::cli::drivers::render_normals;
 use pathtracer::direct::{DirectHemisphere, DirectLights};
-use pathtracer::global::{DirectStrategy, PathTracer};
+use pathtracer::global::{DirectStrategy, PathTracer, Roulette};
 use pathtracer::intersect::{Aabb, LinearScan, Primitives, TriangleTest};
 use pathtracer::math::{luminance, Rgb};
 use pathtracer::plan::Plan;
 use pathtracer::raygen::Camera;
 use pathtracer::render::{tone_map, write_png, RenderSettings, Rendered};
+use pathtracer::sampling::SamplerKind;
 use pathtracer::scene::{course_files, Scene};
 use pathtracer::world::World;
 use plotters::prelude::*;
@@ -87,6 +88,8 @@ impl Setup {
             samples_per_pixel,
             threads: Some(self.threads),
             seed,
+            // The independent sampler the documented studies were measured with.
+            sampler: SamplerKind::Independent,
             progress: false,
         }
     }
@@ -136,7 +139,7 @@ fn paths(l: u32, m: u32, accumulate: bool) -> PathTracer {
         direct: lights(l),
         max_depth: m,
         accumulate,
-        russian_roulette: true,
+        roulette: Roulette::Fixed,
     }
 }
 
@@ -146,7 +149,7 @@ fn direct(strategy: DirectStrategy) -> PathTracer {
         direct: strategy,
         max_depth: 1,
         accumulate: true,
-        russian_roulette: false,
+        roulette: Roulette::Off,
     }
 }
 

@@ -19,7 +19,8 @@
 //! piecewise-constant distributions, floating-point helpers), [`lights`] (the light set every part samples:
 //! one interface for every kind of light, built once per render),
 //! [`world`] (the scene as the renderer sees it: intersector, shading
-//! points, which light a surface belongs to), [`plan`] (which effects a
+//! points, which light a surface belongs to), [`sampling`] (the sampler
+//! interface: independent and Owen-scrambled Sobol' numbers), [`plan`] (which effects a
 //! scene calls for, and the integrator specialised to them), [`scene`] (scene model, the
 //! COLLADA loader, built-in scenes), [`render`] (film, tiles, threads,
 //! progress, PNG/EXR output), [`cli`] (the course's flags and what each
@@ -41,5 +42,6 @@ pub mod math;
 pub mod plan;
 pub mod raygen;
 pub mod render;
+pub mod sampling;
 pub mod scene;
 pub mod world;

@@ -196,3 +196,34 @@ fn info_needs_no_writable_output() {
     assert!(ok, "{stderr}");
     assert!(stdout.lines().any(|l| l == "triangles: 12"), "{stdout}");
 }
+
+#[test]
+fn info_names_the_sampler_and_the_roulette() {
+    let plan = |flags: &[&str]| {
+        let mut args = vec!["--info"];
+        args.extend(flags);
+        let (ok, stdout, _) = run(PATHTRACER, &args);
+        assert!(ok, "{stdout}");
+        let line = |what: &str| {
+            stdout
+                .lines()
+                .find(|l| l.starts_with(&format!("plan: {what}: ")))
+                .unwrap_or_else(|| panic!("no plan: {what} line in {stdout}"))
+                .split(' ')
+                .nth(2)
+                .unwrap()
+                .to_string()
+        };
+        (line("sampler"), line("roulette"))
+    };
+    assert_eq!(plan(&[]), ("zsobol".into(), "throughput".into()));
+    assert_eq!(plan(&["--course"]), ("independent".into(), "fixed".into()));
+    assert_eq!(
+        plan(&["--sampler", "independent"]),
+        ("independent".into(), "throughput".into())
+    );
+    assert_eq!(
+        plan(&["--roulette", "fixed"]),
+        ("zsobol".into(), "fixed".into())
+    );
+}

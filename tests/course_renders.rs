@@ -14,6 +14,7 @@ use pathtracer::intersect::Primitives;
 use pathtracer::materials::{BsdfOptions, FresnelModel, MicrofacetSampling};
 use pathtracer::raygen::Camera;
 use pathtracer::render::RenderSettings;
+use pathtracer::sampling::SamplerKind;
 use pathtracer::world::{World, WorldOptions};
 
 /// Small renders of every course scene stay finite: samples with a NaN or
@@ -31,6 +32,7 @@ fn course_scenes_render_without_nan_or_infinity() {
         samples_per_pixel: 2,
         threads: Some(1),
         seed: 7,
+        sampler: SamplerKind::default(),
         progress: false,
     };
     for path in files {

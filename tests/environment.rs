@@ -34,6 +34,7 @@ use pathtracer::lights::LightPdf;
 use pathtracer::math::rng::{next_2d, sampler};
 use pathtracer::math::warp::sample_uniform_sphere;
 use pathtracer::math::{luminance, Rgb};
+use pathtracer::sampling::{IndependentSampler, Sampler};
 use pathtracer::scene::Scene;
 use pathtracer::world::World;
 
@@ -118,10 +119,10 @@ fn estimate(
     let accel = accel(scene);
     let world = World::new(scene, &accel).with_environment(Some(env.clone()));
     MeanEstimate::of((0..n).map(|k| {
-        let mut rng = sampler(seed, k as u64);
-        let mut origin = 3.0 * sample_uniform_sphere(next_2d(&mut rng));
+        let mut rng = IndependentSampler::from_stream(seed, k as u64);
+        let mut origin = 3.0 * sample_uniform_sphere(rng.get_2d());
         origin.y = origin.y.abs() + 0.2;
-        let target = 0.4 * sample_uniform_sphere(next_2d(&mut rng)) + Vec3::new(0.0, 0.5, 0.0);
+        let target = 0.4 * sample_uniform_sphere(rng.get_2d()) + Vec3::new(0.0, 0.5, 0.0);
         let ray = Ray::new(origin, (target - origin).normalize());
         let l = tracer.radiance(&world, &ray, &mut rng);
         assert!(l.is_finite(), "non-finite radiance {l}");

@@ -18,6 +18,11 @@
 //! outside it `F L + (1 - F) L_inside / eta^2` with `L_inside = eta^2 L`,
 //! which checks the `1 / eta^2` of radiance crossing the boundary.
 //!
+//! Russian roulette is checked with both rules, the course's fixed
+//! `q = 0.65` and the throughput rule (`Roulette::Throughput`, whose `q`
+//! also carries the `eta^2` of the glass sphere). Samples come from the
+//! independent sampler: the intervals assume independent samples.
+//!
 //! Every comparison is a confidence interval at level `1 - ALPHA / k` for
 //! the `k` comparisons of its test (Bonferroni), with fixed seeds.
 
@@ -28,10 +33,10 @@ use common::{assert_mean_matches, MeanEstimate, ALPHA};
 use glam::Vec3;
 use pathtracer::bvh::BvhAccel;
 use pathtracer::direct::{DirectHemisphere, DirectLights};
-use pathtracer::global::{DirectStrategy, PathTracer};
+use pathtracer::global::{DirectStrategy, PathTracer, Roulette};
 use pathtracer::intersect::{Primitives, Ray};
-use pathtracer::math::rng::{next_2d, sampler};
 use pathtracer::math::warp::sample_uniform_sphere;
+use pathtracer::sampling::{IndependentSampler, Sampler};
 use pathtracer::scene::normals::area_weighted_vertex_normals;
 use pathtracer::scene::{Material, Scene, Sphere, TriangleMesh};
 use pathtracer::world::World;
@@ -88,9 +93,9 @@ fn estimate_from(
 ) -> MeanEstimate {
     let accel = BvhAccel::new(Primitives::from_scene(scene));
     let view = World::new(scene, &accel);
-    let mut rng = sampler(seed, 0);
+    let mut rng = IndependentSampler::from_stream(seed, 0);
     MeanEstimate::of((0..n).map(|_| {
-        let ray = Ray::new(origin, sample_uniform_sphere(next_2d(&mut rng)));
+        let ray = Ray::new(origin, sample_uniform_sphere(rng.get_2d()));
         let l = tracer.radiance(&view, &ray, &mut rng);
         assert!(l.is_finite(), "non-finite radiance {l}");
         l.x as f64
@@ -103,14 +108,17 @@ fn geometric_sum(albedo: f64, radiance: f64, max_depth: u32) -> f64 {
 
 /// Paths of up to 200 bounces with Russian roulette: `a^201` is below
 /// 1e-19, so the sum is the infinite one.
-fn with_roulette(direct: DirectStrategy) -> PathTracer {
+fn with_roulette(direct: DirectStrategy, roulette: Roulette) -> PathTracer {
     PathTracer {
         direct,
         max_depth: 200,
         accumulate: true,
-        russian_roulette: true,
+        roulette,
     }
 }
+
+/// Both rules of Russian roulette.
+const ROULETTES: [Roulette; 2] = [Roulette::Fixed, Roulette::Throughput];
 
 fn strategies() -> [(&'static str, DirectStrategy); 4] {
     [
@@ -146,7 +154,7 @@ fn furnace_without_russian_roulette_sums_m_bounces() {
                 direct,
                 max_depth,
                 accumulate: true,
-                russian_roulette: false,
+                roulette: Roulette::Off,
             };
             let label = format!("{name}, a = {albedo}, m = {max_depth}");
             let est = estimate(&scene, &tracer, 4000, 7);
@@ -161,11 +169,13 @@ fn furnace_with_russian_roulette_reaches_le_over_one_minus_a() {
         let scene = furnace(albedo as f32, 1.0);
         let expected = 1.0 / (1.0 - albedo);
         for (name, direct) in strategies() {
-            let tracer = with_roulette(direct);
-            let est = estimate(&scene, &tracer, 20_000, 11);
-            assert!(est.se > 0.0, "Russian roulette adds noise");
-            let label = format!("{name}, a = {albedo}");
-            assert_mean_matches(&label, est, expected, ALPHA / 8.0, 0.0);
+            for roulette in ROULETTES {
+                let tracer = with_roulette(direct, roulette);
+                let est = estimate(&scene, &tracer, 20_000, 11);
+                assert!(est.se > 0.0, "Russian roulette adds noise");
+                let label = format!("{name}, a = {albedo}, roulette {roulette:?}");
+                assert_mean_matches(&label, est, expected, ALPHA / 16.0, 0.0);
+            }
         }
     }
 }
@@ -180,7 +190,7 @@ fn only_the_m_th_bounce_with_o_0() {
             direct,
             max_depth,
             accumulate: false,
-            russian_roulette: false,
+            roulette: Roulette::Off,
         };
         let est = estimate(&scene, &tracer, 4000, 13);
         assert_mean_matches(name, est, expected, ALPHA / 4.0, 1e-4 * expected);
@@ -224,14 +234,17 @@ fn mirror_and_glass_spheres_are_invisible_in_a_furnace() {
             material: 1,
         });
         for (name, direct) in strategies() {
-            let tracer = with_roulette(direct);
-            let est = estimate(&scene, &tracer, 20_000, 17);
-            let label = format!("{object}, {name}");
-            assert_mean_matches(&label, est, expected, ALPHA / 12.0, 0.0);
-            if object == "glass sphere" {
-                let inside = estimate_from(scene.spheres[0].center, &scene, &tracer, 20_000, 19);
-                let label = format!("inside the {object}, {name}");
-                assert_mean_matches(&label, inside, 2.25 * expected, ALPHA / 12.0, 0.0);
+            for roulette in ROULETTES {
+                let tracer = with_roulette(direct, roulette);
+                let est = estimate(&scene, &tracer, 20_000, 17);
+                let label = format!("{object}, {name}, roulette {roulette:?}");
+                assert_mean_matches(&label, est, expected, ALPHA / 24.0, 0.0);
+                if object == "glass sphere" {
+                    let inside =
+                        estimate_from(scene.spheres[0].center, &scene, &tracer, 20_000, 19);
+                    let label = format!("inside the {object}, {name}, roulette {roulette:?}");
+                    assert_mean_matches(&label, inside, 2.25 * expected, ALPHA / 24.0, 0.0);
+                }
             }
         }
     }

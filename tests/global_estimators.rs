@@ -20,10 +20,10 @@ use std::f64::consts::PI;
 
 use common::{
     accel, assert_mean_matches, assert_means_agree, diffuse, emission, estimate, ray_towards,
-    tracer, SceneBuilder, ALPHA, HEMISPHERE, LIGHTS,
+    tracer, tracer_with, SceneBuilder, ALPHA, HEMISPHERE, LIGHTS,
 };
 use glam::{DVec3, Vec3};
-use pathtracer::global::PathTracer;
+use pathtracer::global::{PathTracer, Roulette};
 use pathtracer::intersect::Ray;
 use pathtracer::scene::builtin::cornell_box;
 use pathtracer::scene::Light;
@@ -113,7 +113,7 @@ fn furnace_integrating_sphere() {
             direct: LIGHTS,
             max_depth: m as u32,
             accumulate,
-            russian_roulette: rr,
+            roulette: if rr { Roulette::Fixed } else { Roulette::Off },
         };
         let est = estimate(&tracer_scene, &pt, &ray, n, 100 + k as u64);
         assert_mean_matches(
@@ -213,8 +213,10 @@ fn hemisphere_and_light_sampling_agree_in_a_closed_box() {
 }
 
 /// Russian roulette changes the variance, not the mean: two points of the
-/// Cornell box at depth 6 with roulette on and off, two-sample z-tests. Checked by hand: not dividing by the continuation probability
-/// fails (the roulette estimate drops by 6 %, 50 standard errors).
+/// Cornell box at depth 6 with roulette off, and on by each rule (the
+/// course's fixed `q` and the throughput rule), two-sample z-tests.
+/// Checked by hand: not dividing by the continuation probability fails
+/// (the fixed roulette's estimate drops by 6 %, 50 standard errors).
 #[test]
 fn russian_roulette_on_and_off_agree() {
     let cornell = cornell_box();
@@ -222,17 +224,26 @@ fn russian_roulette_on_and_off_agree() {
     let st = World::new(&cornell, &cornell_accel);
     let eye = Vec3::new(0.0, 0.75, 0.9);
     let targets = [Vec3::new(0.2, 0.0, -0.3), Vec3::new(-1.0, 0.5, -0.5)];
-    let alpha = ALPHA / targets.len() as f64;
+    let rules = [Roulette::Fixed, Roulette::Throughput];
+    let alpha = ALPHA / (targets.len() * rules.len()) as f64;
     for (k, target) in targets.into_iter().enumerate() {
         let ray = ray_towards(eye, target);
-        let seed = 50 + 2 * k as u64;
+        let seed = 50 + 3 * k as u64;
         let off = estimate(&st, &tracer(LIGHTS, 6, false), &ray, 60_000, seed);
-        let on = estimate(&st, &tracer(LIGHTS, 6, true), &ray, 120_000, seed + 1);
-        assert_means_agree(
-            &format!("Cornell box towards {target}, roulette off and on"),
-            off,
-            on,
-            alpha,
-        );
+        for (r, rule) in rules.into_iter().enumerate() {
+            let on = estimate(
+                &st,
+                &tracer_with(LIGHTS, 6, rule),
+                &ray,
+                120_000,
+                seed + 1 + r as u64,
+            );
+            assert_means_agree(
+                &format!("Cornell box towards {target}, roulette off and {rule:?}"),
+                off,
+                on,
+                alpha,
+            );
+        }
     }
 }

@@ -8,7 +8,7 @@ mod common;
 
 use pathtracer::cli::drivers::render_lighting;
 use pathtracer::direct::DirectLights;
-use pathtracer::global::{DirectStrategy, PathTracer};
+use pathtracer::global::{DirectStrategy, PathTracer, Roulette};
 use pathtracer::math::{luminance, Rgb};
 use pathtracer::render::{tone_map, Film, RenderSettings};
 use pathtracer::world::World;
@@ -57,7 +57,7 @@ fn cbbunny_looks_like_the_course_render() {
         }),
         max_depth: 5,
         accumulate: true,
-        russian_roulette: true,
+        roulette: Roulette::Fixed,
     };
     let settings = RenderSettings {
         width: w,

@@ -188,7 +188,7 @@ fn renders_through_the_wide_bvh_equal_renders_through_the_binary_one() {
         samples_per_pixel: 4,
         threads: Some(2),
         seed: 11,
-        progress: false,
+        ..RenderSettings::default()
     };
     let camera = Camera::course_placement(&scene.camera, &prims.bounds(), 48, 36);
     let pixels = |r: pathtracer::render::Rendered| {

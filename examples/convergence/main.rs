@@ -12,7 +12,9 @@
 //! factors), `materials` (MIS against light or BSDF sampling alone, and
 //! the microfacet samplers, on glossy spheres), `environment` (importance
 //! against uniform sampling of the built-in sky, with and without MIS, on
-//! `bunny_unlit.dae`) or `all`. Charts go to `--out` (default `docs/images`), tables
+//! `bunny_unlit.dae`), `sampling` (independent against ZSobol sampler,
+//! fixed against throughput roulette, at equal samples; run it with
+//! `-r 480 360 -t 2`) or `all`. Charts go to `--out` (default `docs/images`), tables
 //! to stdout, progress to stderr. The course's scenes are found by name
 //! under `--scenes DIR`, by default under `$CS184_SCENES` (the course
 //! starter's `dae/` folder; see `pathtracer::scene::course_files`). Images are 160 x 120 (`-r`) with
@@ -25,6 +27,7 @@
 mod course;
 mod measure;
 mod plot;
+mod sampling;
 mod studies;
 
 use std::error::Error;
@@ -34,7 +37,7 @@ use std::process::ExitCode;
 use studies::Options;
 
 const USAGE: &str =
-    "usage: convergence direct|samples|global|adaptive|course|materials|environment|all \
+    "usage: convergence direct|samples|global|adaptive|course|materials|environment|sampling|all \
                      [--out DIR] [--scenes DIR] [-t N] [-r W H]";
 
 fn parse(args: &[String]) -> Result<(String, Options), Box<dyn Error>> {
@@ -79,6 +82,7 @@ fn run(study: &str, options: &Options) -> Result<(), Box<dyn Error>> {
         "course" => studies::course(options),
         "materials" => studies::materials(options),
         "environment" => studies::environment(options),
+        "sampling" => sampling::sampling(options),
         "all" => [
             "direct",
             "samples",

@@ -38,6 +38,7 @@ use pathtracer::intersect::Primitives;
 use pathtracer::math::luminance;
 use pathtracer::raygen::Camera;
 use pathtracer::render::{pixel_ray, RenderSettings, Rendered};
+use pathtracer::sampling::SamplerKind;
 use pathtracer::scene::{course_files, Scene};
 use pathtracer::world::{World, WorldOptions};
 
@@ -55,6 +56,10 @@ pub struct Setup {
     pub threads: Option<usize>,
     /// The environment light of every render (`-e`), if any.
     pub environment: Option<EnvironmentLight>,
+    /// The sampler of every render but the reference (which is always
+    /// independent, so that its standard errors hold): independent unless
+    /// a study says otherwise.
+    pub sampler: SamplerKind,
 }
 
 impl Setup {
@@ -91,6 +96,7 @@ impl Setup {
             height,
             threads,
             environment: None,
+            sampler: SamplerKind::Independent,
         })
     }
 
@@ -123,6 +129,7 @@ impl Setup {
             samples_per_pixel,
             threads: self.threads,
             seed,
+            sampler: self.sampler,
             progress: false,
         }
     }
@@ -164,10 +171,20 @@ impl Setup {
         adaptive: Option<Adaptive>,
         seed: u64,
     ) -> Rendered {
+        let settings = self.settings(samples_per_pixel, seed);
+        self.render_settings(tracer, options, &settings, adaptive)
+    }
+
+    fn render_settings(
+        &self,
+        tracer: &PathTracer,
+        options: WorldOptions,
+        settings: &RenderSettings,
+        adaptive: Option<Adaptive>,
+    ) -> Rendered {
         let scene = World::with_options(&self.scene, &self.accel, options)
             .with_environment(self.environment.clone());
-        let settings = self.settings(samples_per_pixel, seed);
-        render_lighting(&scene, tracer, &self.camera, &settings, adaptive)
+        render_lighting(&scene, tracer, &self.camera, settings, adaptive)
     }
 
     /// The study's reference: `samples_per_pixel` samples, its own seed.
@@ -182,7 +199,11 @@ impl Setup {
         options: WorldOptions,
         samples_per_pixel: u32,
     ) -> Reference {
-        let rendered = self.render_with(tracer, options, samples_per_pixel, REFERENCE_SEED);
+        let settings = RenderSettings {
+            sampler: SamplerKind::Independent,
+            ..self.settings(samples_per_pixel, REFERENCE_SEED)
+        };
+        let rendered = self.render_settings(tracer, options, &settings, None);
         let reference = Reference::new(&rendered, self.emitter_free_pixels());
         eprintln!(
             "reference {}: {} spp, {:.1} s, {} of {} pixels see no emitter, mean luminance {:.4}, own relative error {:.3} %",

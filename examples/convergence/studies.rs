@@ -7,7 +7,7 @@ use std::path::PathBuf;
 use pathtracer::adaptive::Adaptive;
 use pathtracer::direct::{DirectHemisphere, DirectLights};
 use pathtracer::environment::{builtin_sky, EnvironmentLight, EnvironmentSampling};
-use pathtracer::global::{DirectStrategy, PathTracer};
+use pathtracer::global::{DirectStrategy, PathTracer, Roulette};
 use pathtracer::materials::{BsdfOptions, FresnelModel, MicrofacetSampling};
 use pathtracer::world::WorldOptions;
 
@@ -15,7 +15,7 @@ use crate::course::render_direct;
 use crate::measure::{mean, pixel_luminance, table, Measurement, Setup};
 use crate::plot::{line_chart, Chart, Series};
 
-type Result<T> = std::result::Result<T, Box<dyn Error>>;
+pub type Result<T> = std::result::Result<T, Box<dyn Error>>;
 
 /// What every study needs to know.
 pub struct Options {
@@ -27,7 +27,7 @@ pub struct Options {
 }
 
 impl Options {
-    fn setup(&self, file: &str) -> Result<Setup> {
+    pub fn setup(&self, file: &str) -> Result<Setup> {
         Setup::load(self.scenes.as_deref(), file, self.size, self.threads)
     }
 }
@@ -42,7 +42,11 @@ fn lights(samples_per_light: u32, max_depth: u32, russian_roulette: bool) -> Pat
         }),
         max_depth,
         accumulate: true,
-        russian_roulette,
+        roulette: if russian_roulette {
+            Roulette::Fixed
+        } else {
+            Roulette::Off
+        },
     }
 }
 
@@ -53,7 +57,7 @@ fn hemisphere(directions: u32) -> PathTracer {
         }),
         max_depth: 1,
         accumulate: true,
-        russian_roulette: false,
+        roulette: Roulette::Off,
     }
 }
 
@@ -378,7 +382,7 @@ pub fn materials(options: &Options) -> Result<()> {
         direct,
         max_depth: 5,
         accumulate: true,
-        russian_roulette: true,
+        roulette: Roulette::Fixed,
     };
     let mis = with(DirectStrategy::Lights(DirectLights {
         samples_per_light: 1,
@@ -526,7 +530,7 @@ pub fn environment(options: &Options) -> Result<()> {
         direct,
         max_depth: 5,
         accumulate: true,
-        russian_roulette: true,
+        roulette: Roulette::Fixed,
     };
     setup.environment = Some(importance.clone());
     let reference = setup.reference(&tracer(with(true)), 1024);

@@ -12,6 +12,12 @@
 //! approximation). Every `batch` samples (`-a BATCH TOL`, defaults 32 and
 //! 0.05) the pixel stops when `I <= TOL mu`, else at the `-s` limit.
 //!
+//! The interval assumes independent samples. With a low-discrepancy
+//! sampler ([`crate::sampling::ZSobolSampler`], the default) a pixel's
+//! samples are stratified: the mean's true error is below `sigma / sqrt(n)`,
+//! so `I` overestimates it and the test is conservative (pixels stop
+//! later than they need, never earlier).
+//!
 //! The running sums are kept in `f64`, so `s2 - s1^2 / n` does not lose
 //! the variance to cancellation at the sample counts used here (the test
 //! compares against a two-pass computation).

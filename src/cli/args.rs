@@ -7,12 +7,16 @@ use clap::Parser;
 
 use crate::adaptive::Adaptive;
 use crate::depth_of_field::{ThinLens, COURSE_FOCAL_DISTANCE};
+use crate::global::Roulette;
 use crate::lights::LightConvention;
 use crate::materials::{BsdfOptions, FresnelModel};
 
 use super::values::{non_negative, positive};
-pub use super::values::{AccelArg, Builtin, LightChoiceArg, MicrofacetSamplingArg};
+pub use super::values::{
+    AccelArg, Builtin, LightChoiceArg, MicrofacetSamplingArg, RouletteArg, SamplerArg,
+};
 use crate::render::RenderSettings;
+use crate::sampling::SamplerKind;
 use crate::scene::{Scene, SceneError};
 use crate::world::WorldOptions;
 
@@ -186,6 +190,22 @@ pub struct CourseArgs {
     /// Seed of the render's random numbers.
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
+
+    /// Where the random numbers come from: `independent` uniform numbers
+    /// (the course's) or Owen-scrambled Sobol' points in Morton order
+    /// (`zsobol`, the default: less noise at equal samples).
+    #[arg(long, value_enum, value_name = "SAMPLER", default_value_t = SamplerArg::Zsobol)]
+    pub sampler: SamplerArg,
+
+    /// Russian roulette: continue with probability 0.65 after the first
+    /// indirect bounce (`fixed`, the course's) or with probability
+    /// min(1, path throughput) (`throughput`, the default).
+    #[arg(long, value_enum, value_name = "RULE", default_value_t = RouletteArg::Throughput)]
+    pub roulette: RouletteArg,
+
+    /// The course's sampling: `--sampler independent --roulette fixed`.
+    #[arg(long, conflicts_with_all = ["sampler", "roulette"])]
+    pub course: bool,
 }
 
 /// `part2-bvh`'s flags: the course's, plus the benchmarks.
@@ -317,6 +337,24 @@ impl CourseArgs {
         }
     }
 
+    /// The sampler: `--sampler`, independent with `--course`.
+    pub fn sampler_kind(&self) -> SamplerKind {
+        if self.course {
+            SamplerKind::Independent
+        } else {
+            self.sampler.into()
+        }
+    }
+
+    /// The Russian roulette rule: `--roulette`, fixed with `--course`.
+    pub fn roulette(&self) -> Roulette {
+        if self.course {
+            Roulette::Fixed
+        } else {
+            self.roulette.into()
+        }
+    }
+
     /// The render settings these flags ask for (progress bar on).
     pub fn render_settings(&self) -> RenderSettings {
         RenderSettings {
@@ -325,6 +363,7 @@ impl CourseArgs {
             samples_per_pixel: self.samples(),
             threads: self.threads.map(usize::from),
             seed: self.seed,
+            sampler: self.sampler_kind(),
             progress: true,
         }
     }
@@ -437,6 +476,31 @@ mod tests {
         }
         assert!(CourseArgs::try_parse_from(["p", "--microfacet-sampling", "ggx"]).is_err());
         assert!(CourseArgs::try_parse_from(["p", "--half-vector"]).is_err());
+    }
+
+    #[test]
+    fn sampler_and_roulette_default_to_the_better_ones_and_course_selects_the_courses() {
+        let a = CourseArgs::try_parse_from(["p"]).unwrap();
+        assert_eq!(
+            (a.sampler_kind(), a.roulette()),
+            (SamplerKind::ZSobol, Roulette::Throughput)
+        );
+        assert_eq!(a.render_settings().sampler, SamplerKind::ZSobol);
+        let c = CourseArgs::try_parse_from(["p", "--course"]).unwrap();
+        assert_eq!(
+            (c.sampler_kind(), c.roulette()),
+            (SamplerKind::Independent, Roulette::Fixed)
+        );
+        assert_eq!(c.render_settings().sampler, SamplerKind::Independent);
+        let b =
+            CourseArgs::try_parse_from(["p", "--sampler", "independent", "--roulette", "fixed"])
+                .unwrap();
+        assert_eq!(
+            (b.sampler_kind(), b.roulette()),
+            (SamplerKind::Independent, Roulette::Fixed)
+        );
+        assert!(CourseArgs::try_parse_from(["p", "--course", "--sampler", "zsobol"]).is_err());
+        assert!(CourseArgs::try_parse_from(["p", "--sampler", "sobol"]).is_err());
     }
 
     #[test]

@@ -1,9 +1,11 @@
 //! The values of the course's flags that are more than a number: checked
-//! numbers, the microfacet sampling strategy, the light choice, and the
-//! built-in scenes.
+//! numbers, the microfacet sampling strategy, the light choice, the
+//! sampler, the Russian roulette, and the built-in scenes.
 
+use crate::global::Roulette;
 use crate::lights::LightChoiceRule;
 use crate::materials::MicrofacetSampling;
+use crate::sampling::SamplerKind;
 use crate::scene::{builtin, Scene};
 
 /// A finite number `>= 0`.
@@ -73,6 +75,44 @@ impl From<LightChoiceArg> for LightChoiceRule {
             LightChoiceArg::Auto => LightChoiceRule::Auto,
             LightChoiceArg::Every => LightChoiceRule::EveryLight,
             LightChoiceArg::Power => LightChoiceRule::ByPower,
+        }
+    }
+}
+
+/// `--sampler`: the command line's names of [`SamplerKind`].
+#[derive(clap::ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum SamplerArg {
+    /// Independent uniform numbers, a PCG32 stream per pixel (the course's).
+    Independent,
+    /// Owen-scrambled Sobol' points in Morton order (the default, least noise).
+    #[default]
+    Zsobol,
+}
+
+impl From<SamplerArg> for SamplerKind {
+    fn from(arg: SamplerArg) -> Self {
+        match arg {
+            SamplerArg::Independent => SamplerKind::Independent,
+            SamplerArg::Zsobol => SamplerKind::ZSobol,
+        }
+    }
+}
+
+/// `--roulette`: the command line's names of the [`Roulette`] rules.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum RouletteArg {
+    /// Continue with probability 0.65 after the first indirect bounce (the course's).
+    Fixed,
+    /// Continue with probability min(1, path throughput) (pbrt-v4's, the default).
+    #[default]
+    Throughput,
+}
+
+impl From<RouletteArg> for Roulette {
+    fn from(arg: RouletteArg) -> Self {
+        match arg {
+            RouletteArg::Fixed => Roulette::Fixed,
+            RouletteArg::Throughput => Roulette::Throughput,
         }
     }
 }

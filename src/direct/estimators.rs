@@ -1,7 +1,5 @@
 //! The two direct-lighting estimators of part 3.
 
-use rand::Rng;
-
 use glam::Vec3;
 
 use crate::global::emission::{found_emission, PrevVertex};
@@ -9,9 +7,9 @@ use crate::global::DirectStrategy;
 use crate::intersect::Intersector;
 use crate::lights::{LightChoice, LightPdf, LightSample, LightSet, LightStrategy};
 use crate::math::mis::power_heuristic;
-use crate::math::rng::{next_2d, Sampler};
 use crate::math::warp::{sample_uniform_hemisphere, uniform_hemisphere_pdf};
 use crate::math::Rgb;
+use crate::sampling::Sampler;
 use crate::world::{ShadingPoint, World};
 
 /// Direct lighting by uniform hemisphere sampling (`-H`).
@@ -40,7 +38,7 @@ impl DirectHemisphere {
         &self,
         world: &World<I>,
         point: &ShadingPoint,
-        rng: &mut Sampler,
+        sampler: &mut impl Sampler,
     ) -> Rgb {
         let n = self.samples.max(1);
         let mut sum = Rgb::ZERO;
@@ -50,7 +48,7 @@ impl DirectHemisphere {
             bsdf_pdf: uniform_hemisphere_pdf(Vec3::Z),
         };
         for _ in 0..n {
-            let wi_local = sample_uniform_hemisphere(next_2d(rng));
+            let wi_local = sample_uniform_hemisphere(sampler.get_2d());
             let wi = point.frame.to_world(wi_local);
             let ray = point.hit.spawn_ray(wi);
             let next = world.intersector.intersect(&ray);
@@ -104,7 +102,7 @@ impl DirectLights {
         &self,
         world: &World<I>,
         point: &ShadingPoint,
-        rng: &mut Sampler,
+        sampler: &mut impl Sampler,
     ) -> Rgb {
         let lights = &world.lights;
         match lights.choice() {
@@ -114,8 +112,8 @@ impl DirectLights {
                     let strategy = self.strategy(lights, index);
                     let mut sum = Rgb::ZERO;
                     for _ in 0..strategy.samples {
-                        let uc = rng.gen::<f32>();
-                        if let Some(sample) = light.sample_li(point.hit.p, uc, next_2d(rng)) {
+                        let uc = sampler.get_1d();
+                        if let Some(sample) = light.sample_li(point.hit.p, uc, sampler.get_2d()) {
                             sum += self.contribution(world, point, &sample, strategy);
                         }
                     }
@@ -127,11 +125,11 @@ impl DirectLights {
                 let n = self.samples_per_light.max(1);
                 let mut sum = Rgb::ZERO;
                 for _ in 0..n {
-                    let index = pmf.sample(rng.gen::<f32>()).cell;
+                    let index = pmf.sample(sampler.get_1d()).cell;
                     let strategy = self.strategy(lights, index);
-                    let uc = rng.gen::<f32>();
+                    let uc = sampler.get_1d();
                     let light = &lights.lights[index];
-                    if let Some(sample) = light.sample_li(point.hit.p, uc, next_2d(rng)) {
+                    if let Some(sample) = light.sample_li(point.hit.p, uc, sampler.get_2d()) {
                         sum += self.contribution(world, point, &sample, strategy);
                     }
                 }

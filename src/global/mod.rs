@@ -24,26 +24,29 @@
 //! multiple importance sampling it carries the BSDF half of the direct
 //! light). A ray that escapes sees the lights at infinity.
 //!
-//! Russian roulette (Arvo and Kirk 1990) ends a path after its first
-//! indirect bounce with probability `1 - q`, `q =` [`CONTINUE_PROBABILITY`],
-//! and divides the surviving estimate by `q`: unbiased for the sum of
-//! bounces up to `-m`, as `E = q (X / q) + (1 - q) 0 = X`.
+//! Russian roulette ([`roulette`]) ends a path from its second vertex on
+//! with probability `1 - q` and divides the surviving estimate by `q`:
+//! unbiased for the sum of bounces up to `-m`, as `E = q (X / q) + (1 - q) 0 = X`.
+//! `q` is the course's fixed 0.65 ([`Roulette::Fixed`]) or follows the
+//! path's throughput ([`Roulette::Throughput`], the default).
+//!
+//! Random numbers come from a [`Sampler`], in a fixed order per vertex:
+//! the direct-light estimate's, the BSDF's 1D lobe choice and 2D
+//! direction, then the roulette's 1D number (drawn whenever roulette
+//! applies at the vertex, so that a sample's dimensions line up with its
+//! pixel's other samples whatever `q` is).
 
 pub mod emission;
+pub mod roulette;
 
 pub use emission::{emission_weight, Emitter, PrevVertex};
-
-use rand::Rng;
+pub use roulette::{Roulette, CONTINUE_PROBABILITY};
 
 use crate::direct::{DirectHemisphere, DirectLights};
 use crate::intersect::{Hit, Intersector, Ray};
-use crate::math::rng::{next_2d, Sampler};
 use crate::math::Rgb;
+use crate::sampling::Sampler;
 use crate::world::{ShadingPoint, World};
-
-/// Probability of continuing a path at each bounce after the first
-/// indirect one.
-pub const CONTINUE_PROBABILITY: f32 = 0.65;
 
 /// How direct light is estimated at each path vertex.
 #[derive(Clone, Copy, Debug)]
@@ -81,8 +84,8 @@ pub struct PathTracer {
     /// Add every bounce up to `max_depth` (`-o 1`), or only the light of
     /// paths with exactly `max_depth` bounces (`-o 0`).
     pub accumulate: bool,
-    /// Russian roulette after the first indirect bounce.
-    pub russian_roulette: bool,
+    /// Russian roulette from the second vertex on, and its rule.
+    pub roulette: Roulette,
 }
 
 impl PathTracer {
@@ -102,10 +105,12 @@ impl PathTracer {
         &self,
         world: &World<I>,
         camera_ray: &Ray,
-        rng: &mut Sampler,
+        sampler: &mut impl Sampler,
     ) -> Rgb {
         let mut l = Rgb::ZERO;
         let mut beta = Rgb::ONE;
+        // Product of eta^2 over the refractions crossed (roulette's scale).
+        let mut eta_scale = 1.0;
         let mut ray = *camera_ray;
         let mut prev = PrevVertex::CameraOrDelta;
         // Vertices so far: the light the next ray finds has this many bounces.
@@ -129,28 +134,33 @@ impl PathTracer {
             }
             let estimates_direct = !matches!(self.direct, DirectStrategy::BsdfOnly);
             if estimates_direct && self.counts(bounces) && !point.bsdf.is_delta() {
-                l += beta * self.one_bounce(world, &point, rng);
+                l += beta * self.one_bounce(world, &point, sampler);
             }
             let last = bounces == self.max_depth;
             if last && !self.last_ray_can_count(world, point.bsdf.is_delta()) {
                 return l;
             }
-            let uc = rng.gen::<f32>();
-            let u = next_2d(rng);
+            let uc = sampler.get_1d();
+            let u = sampler.get_2d();
             let Some(sample) = point.bsdf.sample(point.wo, uc, u) else {
                 return l;
             };
+            let weight = sample.weight();
+            if sample.transmission {
+                eta_scale *= sample.eta * sample.eta;
+            }
             // Russian roulette, never on the first indirect bounce nor on
             // the last ray, which only looks for emission.
-            let q = if self.russian_roulette && bounces > 1 && !last {
-                CONTINUE_PROBABILITY
+            let q = if self.roulette.is_on() && bounces > 1 && !last {
+                let q = self.roulette.continue_probability(beta * weight, eta_scale);
+                if sampler.get_1d() >= q {
+                    return l;
+                }
+                q
             } else {
                 1.0
             };
-            if q < 1.0 && rng.gen::<f32>() >= q {
-                return l;
-            }
-            beta *= sample.weight() / q;
+            beta *= weight / q;
             if !beta.is_finite() {
                 // Counted by the render as a rejected sample, not hidden.
                 return Rgb::splat(f32::NAN);
@@ -176,11 +186,11 @@ impl PathTracer {
         &self,
         world: &World<I>,
         point: &ShadingPoint,
-        rng: &mut Sampler,
+        sampler: &mut impl Sampler,
     ) -> Rgb {
         match self.direct {
-            DirectStrategy::Hemisphere(h) => h.estimate(world, point, rng),
-            DirectStrategy::Lights(d) => d.estimate(world, point, rng),
+            DirectStrategy::Hemisphere(h) => h.estimate(world, point, sampler),
+            DirectStrategy::Lights(d) => d.estimate(world, point, sampler),
             DirectStrategy::BsdfOnly => Rgb::ZERO,
         }
     }

@@ -15,10 +15,11 @@
 
 use crate::depth_of_field::ThinLens;
 use crate::direct::DirectLights;
-use crate::global::{DirectStrategy, PathTracer};
+use crate::global::{DirectStrategy, PathTracer, Roulette};
 use crate::lights::LightSet;
 use crate::materials::{Bsdf, BsdfOptions};
 use crate::math::{luminance, Rgb};
+use crate::sampling::SamplerKind;
 use crate::scene::{Material, Scene};
 
 /// The kinds of scattering a scene's used materials have.
@@ -164,6 +165,15 @@ impl Plan {
                 lens.radius, lens.focal_distance
             )
         });
+        lines.push(match tracer.roulette {
+            Roulette::Off => "plan: roulette: off (paths go on to -m bounces)".into(),
+            Roulette::Fixed => {
+                "plan: roulette: fixed (continue with probability 0.65 from the second vertex: the course's)".into()
+            }
+            Roulette::Throughput => {
+                "plan: roulette: throughput (continue with probability min(1, max channel of the path's throughput) from the second vertex)".into()
+            }
+        });
         let mut warnings = Vec::new();
         let m = tracer.max_depth;
         if bsdfs.mirror && m < 2 {
@@ -191,6 +201,19 @@ impl Plan {
             lines,
             warnings,
         }
+    }
+
+    /// The plan with a line saying where the render's numbers come from.
+    pub fn with_sampler(mut self, sampler: SamplerKind) -> Self {
+        self.lines.push(match sampler {
+            SamplerKind::Independent => {
+                "plan: sampler: independent (uniform numbers, a PCG32 stream per pixel: the course's)".into()
+            }
+            SamplerKind::ZSobol => {
+                "plan: sampler: zsobol (Owen-scrambled Sobol' points in Morton order over pixels)".into()
+            }
+        });
+        self
     }
 
     /// `tracer` specialised to the plan: MIS off where no second strategy

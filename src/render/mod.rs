@@ -1,9 +1,11 @@
 //! Rendering infrastructure: the film, tiles on all cores, the progress
 //! bar, pixel sampling and image output.
 //!
-//! Reproducibility: pixel `(x, y)` draws its random numbers from
-//! `sampler(seed, y * width + x)`, so an image depends on the seed only,
-//! never on the number of threads or the order tiles finish in.
+//! Reproducibility: every camera sample starts its numbers with
+//! [`Sampler::start_pixel_sample`]`((x, y), index)` on the render's
+//! sampler ([`crate::sampling`], `RenderSettings::sampler`), so an image
+//! depends on (seed, pixel, sample index) only, never on the number of
+//! threads or the order tiles finish in.
 
 pub mod film;
 pub mod output;
@@ -22,9 +24,9 @@ use crate::adaptive::{Adaptive, LuminanceStats};
 use glam::Vec2;
 
 use crate::intersect::Ray;
-use crate::math::rng::{next_2d, Sampler};
 use crate::math::Rgb;
 use crate::raygen::{Camera, CameraSample};
+use crate::sampling::{PixelSampler, Sampler};
 
 /// The camera ray through pixel `(x, y)` (row 0 at the top of the image)
 /// at the sub-pixel offset `offset` in `[0, 1)^2`, through the lens point
@@ -63,9 +65,12 @@ pub struct PixelEstimate {
 
 /// Estimates pixel `(x, y)` with up to `max_samples` camera rays: one ray
 /// through the pixel centre when `max_samples == 1` (as the course does),
-/// otherwise rays at uniformly random offsets in the pixel, stopping early
-/// when `adaptive` says the pixel has converged. `radiance` gives each
-/// ray's radiance estimate; non-finite ones are counted and left out.
+/// otherwise rays at offsets in the pixel from `sampler`
+/// ([`Sampler::get_pixel_2d`], uniform over the pixel), stopping early
+/// when `adaptive` says the pixel has converged. Sample `i` starts with
+/// `sampler.start_pixel_sample((x, y), i)`; a lens sample is drawn only
+/// for a lens. `radiance` gives each ray's radiance estimate from the
+/// sampler's next dimensions; non-finite ones are counted and left out.
 #[doc(alias = "raytrace_pixel")]
 pub fn estimate_pixel(
     camera: &Camera,
@@ -73,26 +78,27 @@ pub fn estimate_pixel(
     (x, y): (u32, u32),
     max_samples: u32,
     adaptive: Option<Adaptive>,
-    rng: &mut Sampler,
-    mut radiance: impl FnMut(&Ray, &mut Sampler) -> Rgb,
+    sampler: &mut PixelSampler,
+    mut radiance: impl FnMut(&Ray, &mut PixelSampler) -> Rgb,
 ) -> PixelEstimate {
     let mut stats = LuminanceStats::default();
     let mut sum = Rgb::ZERO;
     let mut estimate = PixelEstimate::default();
     while estimate.samples < max_samples.max(1) {
+        sampler.start_pixel_sample((x, y), estimate.samples);
         let offset = if max_samples <= 1 {
             Vec2::splat(0.5)
         } else {
-            next_2d(rng)
+            sampler.get_pixel_2d()
         };
         // A lens sample only for a lens, so pinhole renders stay as they were.
         let lens = if camera.lens.is_pinhole() {
             Vec2::splat(0.5)
         } else {
-            next_2d(rng)
+            sampler.get_2d()
         };
         let ray = pixel_ray(camera, (width, height), (x, y), offset, lens);
-        let l = radiance(&ray, rng);
+        let l = radiance(&ray, sampler);
         estimate.samples += 1;
         if !l.is_finite() {
             estimate.rejected += 1;
@@ -118,17 +124,17 @@ pub fn render_image(
     camera: &Camera,
     settings: &RenderSettings,
     adaptive: Option<Adaptive>,
-    radiance: impl Fn(&Ray, &mut Sampler) -> Rgb + Sync,
+    radiance: impl Fn(&Ray, &mut PixelSampler) -> Rgb + Sync,
 ) -> Rendered {
     let size = (settings.width, settings.height);
-    let (estimates, stats) = render_tiles(settings, |x, y, rng| {
+    let (estimates, stats) = render_tiles(settings, |x, y, sampler| {
         estimate_pixel(
             camera,
             size,
             (x, y),
             settings.samples_per_pixel,
             adaptive,
-            rng,
+            sampler,
             &radiance,
         )
     });

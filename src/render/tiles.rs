@@ -6,7 +6,7 @@ use std::time::Instant;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
 
-use crate::math::rng::{sampler, Sampler};
+use crate::sampling::{PixelSampler, SamplerKind};
 
 /// Side of a square tile, pixels.
 pub const TILE_SIZE: u32 = 32;
@@ -22,6 +22,8 @@ pub struct RenderSettings {
     pub threads: Option<usize>,
     /// Seed of every random number of the render.
     pub seed: u64,
+    /// Where the random numbers come from (`--sampler`).
+    pub sampler: SamplerKind,
     /// Show a progress bar (only ever drawn on a terminal).
     pub progress: bool,
 }
@@ -34,6 +36,7 @@ impl Default for RenderSettings {
             samples_per_pixel: 1,
             threads: None,
             seed: 0,
+            sampler: SamplerKind::default(),
             progress: false,
         }
     }
@@ -48,12 +51,14 @@ pub struct RenderStats {
     pub threads: usize,
 }
 
-/// Renders every pixel with `shade(x, y, rng)`, where `rng` is pixel
-/// `(x, y)`'s own generator. Tiles run in parallel on `settings.threads`.
+/// Renders every pixel with `shade(x, y, sampler)`, where `sampler` is a
+/// copy of the render's sampler ([`SamplerKind::for_render`]) that
+/// `shade` starts at each of the pixel's samples. Tiles run in parallel
+/// on `settings.threads`.
 /// Returns the pixels' results row by row, row 0 at the top.
 pub fn render_tiles<T: Copy + Default + Send>(
     settings: &RenderSettings,
-    shade: impl Fn(u32, u32, &mut Sampler) -> T + Sync,
+    shade: impl Fn(u32, u32, &mut PixelSampler) -> T + Sync,
 ) -> (Vec<T>, RenderStats) {
     let (width, height) = (settings.width, settings.height);
     let tiles: Vec<(u32, u32)> = (0..height.div_ceil(TILE_SIZE))
@@ -66,16 +71,20 @@ pub fn render_tiles<T: Copy + Default + Send>(
         .num_threads(settings.threads.unwrap_or(0))
         .build()
         .expect("a thread pool");
+    let sampler =
+        settings
+            .sampler
+            .for_render(settings.seed, (width, height), settings.samples_per_pixel);
     let start = Instant::now();
     let rendered: Vec<Vec<T>> = pool.install(|| {
         tiles
             .par_iter()
             .map(|&(x0, y0)| {
                 let mut pixels = Vec::with_capacity((TILE_SIZE * TILE_SIZE) as usize);
+                let mut sampler = sampler.clone();
                 for y in y0..(y0 + TILE_SIZE).min(height) {
                     for x in x0..(x0 + TILE_SIZE).min(width) {
-                        let mut rng = sampler(settings.seed, y as u64 * width as u64 + x as u64);
-                        pixels.push(shade(x, y, &mut rng));
+                        pixels.push(shade(x, y, &mut sampler));
                     }
                 }
                 bar.inc(1);

@@ -5,11 +5,11 @@
 use glam::Vec3;
 use pathtracer::bvh::BvhAccel;
 use pathtracer::direct::{DirectHemisphere, DirectLights};
-use pathtracer::global::{DirectStrategy, PathTracer};
+use pathtracer::global::{DirectStrategy, PathTracer, Roulette};
 use pathtracer::intersect::{Intersector, Primitives, Ray};
 use pathtracer::math::luminance;
-use pathtracer::math::rng::sampler;
 use pathtracer::math::Frame;
+use pathtracer::sampling::IndependentSampler;
 use pathtracer::scene::normals::area_weighted_vertex_normals;
 use pathtracer::scene::{Light, Material, MaterialId, Scene, Sphere};
 use pathtracer::world::World;
@@ -24,13 +24,25 @@ pub const LIGHTS: DirectStrategy = DirectStrategy::Lights(DirectLights {
 /// Direct light by one uniform hemisphere direction.
 pub const HEMISPHERE: DirectStrategy = DirectStrategy::Hemisphere(DirectHemisphere { samples: 1 });
 
-/// A path tracer that accumulates every bounce up to `max_depth`.
+/// A path tracer that accumulates every bounce up to `max_depth`, with
+/// the course's Russian roulette (`Roulette::Fixed`) when `russian_roulette`.
 pub fn tracer(direct: DirectStrategy, max_depth: u32, russian_roulette: bool) -> PathTracer {
+    let roulette = if russian_roulette {
+        Roulette::Fixed
+    } else {
+        Roulette::Off
+    };
+    tracer_with(direct, max_depth, roulette)
+}
+
+/// A path tracer that accumulates every bounce up to `max_depth`, ending
+/// paths by `roulette`.
+pub fn tracer_with(direct: DirectStrategy, max_depth: u32, roulette: Roulette) -> PathTracer {
     PathTracer {
         direct,
         max_depth,
         accumulate: true,
-        russian_roulette,
+        roulette,
     }
 }
 
@@ -158,8 +170,9 @@ pub fn ray_towards(origin: Vec3, target: Vec3) -> Ray {
 }
 
 /// The luminance of `n` independent radiance estimates along `ray`
-/// (one random stream per call, seeded by `seed`): their mean and its
-/// standard error. Panics on a non-finite sample.
+/// (one random stream per call, seeded by `seed`, through the
+/// independent sampler: the standard error assumes independent samples):
+/// their mean and its standard error. Panics on a non-finite sample.
 pub fn estimate<I: Intersector>(
     scene: &World<I>,
     tracer: &PathTracer,
@@ -167,7 +180,7 @@ pub fn estimate<I: Intersector>(
     n: usize,
     seed: u64,
 ) -> MeanEstimate {
-    let mut rng = sampler(seed, 0);
+    let mut rng = IndependentSampler::from_stream(seed, 0);
     MeanEstimate::of((0..n).map(|_| {
         let l = tracer.radiance(scene, ray, &mut rng);
         assert!(l.is_finite(), "non-finite radiance {l}");

@@ -13,13 +13,14 @@ use crate::direct::{DirectHemisphere, DirectLights};
 use crate::environment::{
     builtin_sky, EnvironmentError, EnvironmentLight, EnvironmentMap, EnvironmentSampling,
 };
-use crate::global::{DirectStrategy, PathTracer};
+use crate::global::{DirectStrategy, PathTracer, Roulette};
 use crate::intersect::Intersector;
 use crate::lights::LightSet;
 use crate::plan::Plan;
 use crate::raygen::Camera;
 use crate::render::rendered::rate_image_path;
 use crate::render::{render_image, RenderSettings, Rendered};
+use crate::sampling::SamplerKind;
 use crate::scene::info::describe;
 use crate::scene::Scene;
 use crate::world::World;
@@ -116,7 +117,8 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
         if let Some(env) = environment {
             lights = lights.with_environment(env);
         }
-        let plan = Plan::new(&scene, &lights, &part.tracer, &camera.lens);
+        let plan = Plan::new(&scene, &lights, &part.tracer, &camera.lens)
+            .with_sampler(args.sampler_kind());
         plan.lines.iter().for_each(|line| println!("{line}"));
         plan.warnings
             .iter()
@@ -145,8 +147,12 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
     let settings = args.render_settings();
     let rendered = render_lighting(&world, &tracer, &camera, &settings, part.adaptive);
     report_render(&rendered);
+    let bound = match settings.sampler {
+        SamplerKind::ZSobol => ", assuming independent samples: an upper bound with zsobol",
+        SamplerKind::Independent => "",
+    };
     match rendered.relative_error() {
-        Some(e) => println!("noise: relative standard error {:.2} % (RMS of pixel standard errors / mean luminance)", 100.0 * e),
+        Some(e) => println!("noise: relative standard error {:.2} % (RMS of pixel standard errors / mean luminance{bound})", 100.0 * e),
         None => println!("noise: not estimated (needs at least 2 samples per pixel)"),
     }
     if part.adaptive.is_some() {
@@ -173,7 +179,7 @@ pub fn part3(args: &CourseArgs) -> Result<()> {
                 direct: direct_strategy(args, scene),
                 max_depth: 1,
                 accumulate: true,
-                russian_roulette: false,
+                roulette: Roulette::Off,
             },
             adaptive: None,
             rate_image: false,
@@ -181,13 +187,13 @@ pub fn part3(args: &CourseArgs) -> Result<()> {
     })
 }
 
-/// The path tracer the flags ask for (`-H`, `-l`, `-m`, `-o`).
+/// The path tracer the flags ask for (`-H`, `-l`, `-m`, `-o`, `--roulette`).
 fn path_tracer(args: &CourseArgs, scene: &Scene) -> PathTracer {
     PathTracer {
         direct: direct_strategy(args, scene),
         max_depth: args.max_depth(),
         accumulate: args.accumulate == 1,
-        russian_roulette: true,
+        roulette: args.roulette(),
     }
 }
 
@@ -204,7 +210,8 @@ fn render_paths(args: &CourseArgs) -> Result<()> {
     })
 }
 
-/// `part4-global`: paths up to `-m` bounces with Russian roulette.
+/// `part4-global`: paths up to `-m` bounces with Russian roulette
+/// (`--roulette`).
 pub fn part4(args: &CourseArgs) -> Result<()> {
     render_paths(args)
 }
