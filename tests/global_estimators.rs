@@ -23,7 +23,7 @@ use common::{
     tracer, tracer_with, SceneBuilder, ALPHA, HEMISPHERE, LIGHTS,
 };
 use glam::{DVec3, Vec3};
-use pathtracer::global::{PathTracer, Roulette};
+use pathtracer::global::{PathTracer, Roulette, THROUGHPUT_ROULETTE_AFTER};
 use pathtracer::intersect::Ray;
 use pathtracer::scene::builtin::cornell_box;
 use pathtracer::scene::Light;
@@ -213,8 +213,10 @@ fn hemisphere_and_light_sampling_agree_in_a_closed_box() {
 }
 
 /// Russian roulette changes the variance, not the mean: two points of the
-/// Cornell box at depth 6 with roulette off, and on by each rule (the
-/// course's fixed `q` and the throughput rule), two-sample z-tests.
+/// Cornell box at depth 10 with roulette off, and on by each rule (the
+/// course's fixed `q` from the second vertex, the throughput rule after
+/// [`THROUGHPUT_ROULETTE_AFTER`] bounces, so depth 10 gives it four
+/// vertices to act on), two-sample z-tests.
 /// Checked by hand: not dividing by the continuation probability fails
 /// (the fixed roulette's estimate drops by 6 %, 50 standard errors).
 #[test]
@@ -225,15 +227,17 @@ fn russian_roulette_on_and_off_agree() {
     let eye = Vec3::new(0.0, 0.75, 0.9);
     let targets = [Vec3::new(0.2, 0.0, -0.3), Vec3::new(-1.0, 0.5, -0.5)];
     let rules = [Roulette::Fixed, Roulette::Throughput];
+    const DEPTH: u32 = 10;
+    const { assert!(DEPTH > THROUGHPUT_ROULETTE_AFTER + 2) };
     let alpha = ALPHA / (targets.len() * rules.len()) as f64;
     for (k, target) in targets.into_iter().enumerate() {
         let ray = ray_towards(eye, target);
         let seed = 50 + 3 * k as u64;
-        let off = estimate(&st, &tracer(LIGHTS, 6, false), &ray, 60_000, seed);
+        let off = estimate(&st, &tracer(LIGHTS, DEPTH, false), &ray, 60_000, seed);
         for (r, rule) in rules.into_iter().enumerate() {
             let on = estimate(
                 &st,
-                &tracer_with(LIGHTS, 6, rule),
+                &tracer_with(LIGHTS, DEPTH, rule),
                 &ray,
                 120_000,
                 seed + 1 + r as u64,

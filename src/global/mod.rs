@@ -24,11 +24,12 @@
 //! multiple importance sampling it carries the BSDF half of the direct
 //! light). A ray that escapes sees the lights at infinity.
 //!
-//! Russian roulette ([`roulette`]) ends a path from its second vertex on
-//! with probability `1 - q` and divides the surviving estimate by `q`:
-//! unbiased for the sum of bounces up to `-m`, as `E = q (X / q) + (1 - q) 0 = X`.
-//! `q` is the course's fixed 0.65 ([`Roulette::Fixed`]) or follows the
-//! path's throughput ([`Roulette::Throughput`], the default).
+//! Russian roulette ([`roulette`]) ends a path with probability `1 - q`
+//! and divides the surviving estimate by `q`: unbiased for the sum of
+//! bounces up to `-m`, as `E = q (X / q) + (1 - q) 0 = X`. `q` is the
+//! course's fixed 0.65 from the second vertex on ([`Roulette::Fixed`]) or
+//! follows the path's throughput after [`THROUGHPUT_ROULETTE_AFTER`]
+//! bounces ([`Roulette::Throughput`], the default).
 //!
 //! Random numbers come from a [`Sampler`], in a fixed order per vertex:
 //! the direct-light estimate's, the BSDF's 1D lobe choice and 2D
@@ -40,7 +41,7 @@ pub mod emission;
 pub mod roulette;
 
 pub use emission::{emission_weight, Emitter, PrevVertex};
-pub use roulette::{Roulette, CONTINUE_PROBABILITY};
+pub use roulette::{Roulette, CONTINUE_PROBABILITY, THROUGHPUT_ROULETTE_AFTER};
 
 use crate::direct::{DirectHemisphere, DirectLights};
 use crate::intersect::{Hit, Intersector, Ray};
@@ -149,9 +150,9 @@ impl PathTracer {
             if sample.transmission {
                 eta_scale *= sample.eta * sample.eta;
             }
-            // Russian roulette, never on the first indirect bounce nor on
-            // the last ray, which only looks for emission.
-            let q = if self.roulette.is_on() && bounces > 1 && !last {
+            // Russian roulette, where its rule applies, never on the last
+            // ray, which only looks for emission.
+            let q = if self.roulette.applies_at(bounces) && !last {
                 let q = self.roulette.continue_probability(beta * weight, eta_scale);
                 if sampler.get_1d() >= q {
                     return l;
