@@ -3,6 +3,10 @@
 //! ([`crate::scene::builtin::bumpy_sphere`]) from about 10 thousand to
 //! 10 million triangles.
 //!
+//! Each size is measured for the binary BVH (Part 2's) and for the wide
+//! one the renderers use ([`super::wide`], collapsed from the same binary
+//! tree: its collapse time, bytes and ray rates).
+//!
 //! Memory is counted exactly from the vectors' capacities (heap bytes,
 //! not what the allocator rounds them to), split into the accelerator
 //! (nodes and leaf order), the primitives (shapes by id
@@ -20,6 +24,7 @@ use std::time::Instant;
 use glam::Vec3;
 
 use super::throughput::{primary_rays, random_rays, RUNS};
+use super::wide::{TrianglePack, WideBvhAccel, WideNode};
 use super::{BuildOptions, BvhAccel, Node};
 use crate::intersect::{Intersector, Primitives, Ray, Shape};
 use crate::scene::builtin::bumpy_sphere;
@@ -74,6 +79,15 @@ impl BvhAccel {
     }
 }
 
+impl WideBvhAccel {
+    /// Heap bytes of the wide tree's own vectors (nodes and triangle
+    /// packs, which hold the triangles' vertices), from their capacities.
+    pub fn heap_bytes(&self) -> usize {
+        self.wide.nodes.capacity() * size_of::<WideNode>()
+            + self.wide.packs.capacity() * size_of::<TrianglePack>()
+    }
+}
+
 /// The process's peak resident memory in bytes (`VmHWM`), or `None` where
 /// the kernel does not say (not Linux).
 pub fn peak_resident_bytes() -> Option<u64> {
@@ -98,10 +112,16 @@ pub struct ScaleRow {
     pub primary_mrays: f64,
     /// The same for 2^16 random rays.
     pub random_mrays: f64,
+    /// The wide BVH collapsed from the same tree: seconds of the collapse,
+    /// heap bytes, and the two ray rates.
+    pub wide_collapse_seconds: f64,
+    pub wide_bytes: usize,
+    pub wide_primary_mrays: f64,
+    pub wide_random_mrays: f64,
 }
 
 impl ScaleRow {
-    pub const HEADER: &'static str = "| triangles | build (s) | build CPU (s) | SAH cost | accel B/tri | primitives B/tri | mesh B/tri | peak RSS (MB) | primary (Mrays/s, 1 core) | random (Mrays/s, 1 core) |\n| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |";
+    pub const HEADER: &'static str = "| triangles | build (s) | build CPU (s) | SAH cost | accel B/tri | primitives B/tri | mesh B/tri | peak RSS (MB) | primary (Mrays/s, 1 core) | random (Mrays/s, 1 core) | wide: collapse (s) | wide B/tri | wide primary | wide random |\n| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |";
 }
 
 impl std::fmt::Display for ScaleRow {
@@ -117,7 +137,7 @@ impl std::fmt::Display for ScaleRow {
         };
         write!(
             f,
-            "| {} | {:.3} | {cpu} | {:.2} | {:.1} | {:.1} | {:.1} | {peak} | {:.2} | {:.2} |",
+            "| {} | {:.3} | {cpu} | {:.2} | {:.1} | {:.1} | {:.1} | {peak} | {:.2} | {:.2} | {:.3} | {:.1} | {:.2} | {:.2} |",
             self.triangles,
             self.build_seconds,
             self.sah_cost,
@@ -126,6 +146,10 @@ impl std::fmt::Display for ScaleRow {
             per(self.footprint.mesh),
             self.primary_mrays,
             self.random_mrays,
+            self.wide_collapse_seconds,
+            per(self.wide_bytes),
+            self.wide_primary_mrays,
+            self.wide_random_mrays,
         )
     }
 }
@@ -139,16 +163,31 @@ pub fn scale_row(phi_steps: u32, theta_steps: u32) -> ScaleRow {
     let accel = BvhAccel::new(primitives);
     let build_seconds = start.elapsed().as_secs_f64();
     let build_cpu_seconds = thread_cpu_seconds().zip(cpu_start).map(|(b, a)| b - a);
-    let rate = |rays: Vec<Ray>| closest_hit_rate(&accel, &rays);
+    let (primary, random) = (primary_rays(256), random_rays(1 << 16));
+    let triangles = accel.primitives.len();
+    let sah_cost = accel.bvh.sah_cost(&BuildOptions::default());
+    let footprint = Footprint::of(&accel, &scene.mesh);
+    let primary_mrays = closest_hit_rate(&accel, &primary);
+    let random_mrays = closest_hit_rate(&accel, &random);
+    // The wide tree takes the primitives over, as a render's would.
+    let BvhAccel { bvh, primitives } = accel;
+    let start = Instant::now();
+    let wide = WideBvhAccel::from_binary(&bvh, primitives);
+    let wide_collapse_seconds = start.elapsed().as_secs_f64();
+    drop(bvh);
     ScaleRow {
-        triangles: accel.primitives.len(),
+        triangles,
         build_seconds,
         build_cpu_seconds,
-        sah_cost: accel.bvh.sah_cost(&BuildOptions::default()),
-        footprint: Footprint::of(&accel, &scene.mesh),
+        sah_cost,
+        footprint,
+        primary_mrays,
+        random_mrays,
+        wide_collapse_seconds,
+        wide_bytes: wide.heap_bytes(),
+        wide_primary_mrays: closest_hit_rate(&wide, &primary),
+        wide_random_mrays: closest_hit_rate(&wide, &random),
         peak_bytes: peak_resident_bytes(),
-        primary_mrays: rate(primary_rays(256)),
-        random_mrays: rate(random_rays(1 << 16)),
     }
 }
 
@@ -210,7 +249,7 @@ pub fn write_bumpy_sphere(phi_steps: u32, theta_steps: u32, path: &Path) -> std:
 /// calling thread, the best of [`RUNS`] runs, timed in CPU time where the
 /// kernel gives it (so other work on a shared machine does not count),
 /// else in wall-clock time.
-pub fn closest_hit_rate(accel: &BvhAccel, rays: &[Ray]) -> f64 {
+pub fn closest_hit_rate(accel: &impl Intersector, rays: &[Ray]) -> f64 {
     let mut best = f64::INFINITY;
     for _ in 0..RUNS {
         let (start, cpu_start) = (Instant::now(), thread_cpu_seconds());

@@ -40,6 +40,10 @@ pub fn collapse(bvh: &Bvh, shapes: &[Shape]) -> WideBvh {
         packs: Vec::with_capacity(shapes.len()),
     };
     let root = bvh.root.map(|root| out.link(root));
+    // Give the unused part of the bounds back (for large vectors the
+    // allocator shrinks the mapping in place, no copy).
+    out.nodes.shrink_to_fit();
+    out.packs.shrink_to_fit();
     WideBvh {
         bounds: bvh.bounds,
         root,
