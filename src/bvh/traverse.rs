@@ -72,15 +72,10 @@ impl Bvh {
                 }
             }
             // Pop the next subtree that may still hold a closer hit.
-            loop {
-                let Some((next, entry)) = stack.pop() else {
-                    return best;
-                };
-                if entry <= t_max {
-                    link = next;
-                    break;
-                }
-            }
+            let Some(next) = stack.pop_within(t_max) else {
+                return best;
+            };
+            link = next;
         }
     }
 
@@ -153,5 +148,19 @@ impl<T: Copy, const N: usize> Stack<T, N> {
         self.len = self.len.checked_sub(1)?;
         // SAFETY: every slot below the old `len` was written by `push`.
         Some(unsafe { self.items[self.len].assume_init() })
+    }
+}
+
+impl<L: Copy, const N: usize> Stack<(L, f32), N> {
+    /// Pops subtrees until one whose entry distance is within `t_max`
+    /// (one that may still hold a closer hit); `None` when none is left.
+    #[inline(always)]
+    pub(crate) fn pop_within(&mut self, t_max: f32) -> Option<L> {
+        while let Some((next, entry)) = self.pop() {
+            if entry <= t_max {
+                return Some(next);
+            }
+        }
+        None
     }
 }

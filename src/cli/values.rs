@@ -27,9 +27,9 @@ pub fn positive(s: &str) -> Result<f32, String> {
 /// `part2-bvh --accel`: which BVH the benchmark traces.
 #[derive(clap::ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum AccelArg {
-    /// Part 2's binary BVH ([`crate::bvh::BvhAccel`]), the teaching version.
+    /// Part 2's binary BVH (`bvh::BvhAccel`), the teaching version.
     Binary,
-    /// The four-wide SIMD BVH ([`crate::bvh::WideBvhAccel`]) the renderers use.
+    /// The four-wide SIMD BVH (`bvh::WideBvhAccel`) the renderers use.
     #[default]
     Wide,
 }

@@ -67,15 +67,10 @@ impl WideBvh {
                 }
             }
             // Pop the next subtree that may still hold a closer hit.
-            loop {
-                let Some((next, entry)) = stack.pop() else {
-                    return best;
-                };
-                if entry <= t_max {
-                    link = next;
-                    break;
-                }
-            }
+            let Some(next) = stack.pop_within(t_max) else {
+                return best;
+            };
+            link = next;
         }
     }
 
