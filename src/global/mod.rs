@@ -85,7 +85,7 @@ pub struct PathTracer {
     /// Add every bounce up to `max_depth` (`-o 1`), or only the light of
     /// paths with exactly `max_depth` bounces (`-o 0`).
     pub accumulate: bool,
-    /// Russian roulette from the second vertex on, and its rule.
+    /// Russian roulette and its rule (where it starts depends on the rule).
     pub roulette: Roulette,
 }
 

@@ -15,7 +15,7 @@
 
 use crate::depth_of_field::ThinLens;
 use crate::direct::DirectLights;
-use crate::global::{DirectStrategy, PathTracer, Roulette};
+use crate::global::{DirectStrategy, PathTracer, Roulette, THROUGHPUT_ROULETTE_AFTER};
 use crate::lights::LightSet;
 use crate::materials::{Bsdf, BsdfOptions};
 use crate::math::{luminance, Rgb};
@@ -171,7 +171,7 @@ impl Plan {
                 "plan: roulette: fixed (continue with probability 0.65 from the second vertex: the course's)".into()
             }
             Roulette::Throughput => {
-                "plan: roulette: throughput (continue with probability min(1, max channel of the path's throughput) from the second vertex)".into()
+                format!("plan: roulette: throughput (continue with probability min(1, max channel of the path's throughput) after {THROUGHPUT_ROULETTE_AFTER} bounces)")
             }
         });
         let mut warnings = Vec::new();
