@@ -14,9 +14,11 @@
 //! that reports a hit.
 //!
 //! When a node is entered, the memory of every child it hits is
-//! prefetched (nodes: two lines; leaves: the first pack's three), so the
-//! cache misses of the nearest child and of those pushed for later
-//! overlap; on the benchmark's random rays this gained 10-25 %.
+//! prefetched (nodes: two lines; leaves: all their packs, 2.5 lines
+//! each), so the cache misses of the nearest child and of those pushed
+//! for later overlap; on the benchmark's random rays this gained 10-25 %,
+//! and prefetching all of a leaf's packs rather than the first one's
+//! three lines another 5-7 % (medians of 15 interleaved runs).
 
 use glam::{Vec3, Vec4};
 
@@ -121,8 +123,11 @@ impl WideBvh {
             let child = node.children[mask.trailing_zeros() as usize];
             mask &= mask - 1;
             if child.is_leaf() {
+                // All of the leaf's packs (160 bytes each), not only the
+                // first: 2.4 packs a leaf on average.
                 let pack = self.packs.as_ptr().wrapping_add(child.first as usize);
-                prefetch_lines(pack, 3);
+                let packs = child.packs().len();
+                prefetch_lines(pack, (5 * packs).div_ceil(2));
             } else {
                 let node = self.nodes.as_ptr().wrapping_add(child.first as usize);
                 prefetch_lines(node, 2);
