@@ -1,24 +1,18 @@
 //! The flags students know (the course starter's command line, parsed in
-//! its `src/main.cpp` and listed in the assignment's handout), parsed by clap.
+//! its `src/main.cpp` and listed in the assignment's handout), parsed by
+//! clap; what they ask for in the library's terms is in
+//! [`super::settings`].
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use clap::Parser;
 
-use crate::adaptive::Adaptive;
-use crate::depth_of_field::{ThinLens, COURSE_FOCAL_DISTANCE};
-use crate::global::Roulette;
-use crate::lights::LightConvention;
-use crate::materials::{BsdfOptions, FresnelModel};
+use crate::depth_of_field::COURSE_FOCAL_DISTANCE;
 
 use super::values::{non_negative, positive};
 pub use super::values::{
     AccelArg, Builtin, LightChoiceArg, MicrofacetSamplingArg, RouletteArg, SamplerArg,
 };
-use crate::render::RenderSettings;
-use crate::sampling::SamplerKind;
-use crate::scene::{Scene, SceneError};
-use crate::world::WorldOptions;
 
 /// Largest accepted image side, pixels.
 pub const MAX_SIDE: u32 = 1 << 14;
@@ -229,150 +223,13 @@ pub struct BvhArgs {
     pub accel: AccelArg,
 }
 
-impl CourseArgs {
-    /// The defaults that apply: the course's ([`COURSE_DEFAULTS`]) when a
-    /// scene file is given, else the built-in render's ([`BUILTIN_DEFAULTS`]).
-    pub fn defaults(&self) -> Defaults {
-        if self.scene.is_some() {
-            COURSE_DEFAULTS
-        } else {
-            BUILTIN_DEFAULTS
-        }
-    }
-
-    /// Camera rays per pixel: `-s`, else [`CourseArgs::defaults`].
-    pub fn samples(&self) -> u32 {
-        self.samples.unwrap_or(self.defaults().samples)
-    }
-
-    /// Maximum ray depth: `-m`, else [`CourseArgs::defaults`].
-    pub fn max_depth(&self) -> u32 {
-        self.max_depth.unwrap_or(self.defaults().max_depth)
-    }
-
-    /// Output width in pixels: `-r`, else [`CourseArgs::defaults`].
-    pub fn width(&self) -> u32 {
-        self.resolution
-            .as_ref()
-            .map_or(self.defaults().resolution[0], |r| r[0])
-    }
-
-    /// Output height in pixels: `-r`, else [`CourseArgs::defaults`].
-    pub fn height(&self) -> u32 {
-        self.resolution
-            .as_ref()
-            .map_or(self.defaults().resolution[1], |r| r[1])
-    }
-
-    /// The scene file's contents, or the built-in scene.
-    pub fn load_scene(&self) -> Result<Scene, SceneError> {
-        match &self.scene {
-            Some(path) => crate::scene::load(path),
-            None => Ok(self.builtin.scene()),
-        }
-    }
-
-    /// Where the image goes: `-f`, else `<scene name>.png`.
-    pub fn output_path(&self) -> PathBuf {
-        self.output.clone().unwrap_or_else(|| {
-            let stem = self
-                .scene
-                .as_deref()
-                .and_then(Path::file_stem)
-                .map_or(self.builtin.name().into(), |s| {
-                    s.to_string_lossy().into_owned()
-                });
-            PathBuf::from(format!("{stem}.png"))
-        })
-    }
-
-    /// `-a BATCH TOL` checked: a whole batch size of at least 1 and a
-    /// positive tolerance.
-    pub fn adaptive_settings(&self) -> Result<Option<Adaptive>, String> {
-        let Some(values) = &self.adaptive else {
-            return Ok(None);
-        };
-        let (batch, tolerance) = (values[0], values[1]);
-        if !(batch >= 1.0 && batch.fract() == 0.0 && batch <= 1e6) {
-            return Err(format!(
-                "-a: the batch size must be a whole number from 1, not {batch}"
-            ));
-        }
-        if !(tolerance > 0.0 && tolerance.is_finite()) {
-            return Err(format!(
-                "-a: the tolerance must be positive, not {tolerance}"
-            ));
-        }
-        Ok(Some(Adaptive {
-            batch: batch as u32,
-            tolerance,
-        }))
-    }
-
-    /// The thin lens of `-b` and `-d`.
-    pub fn lens(&self) -> ThinLens {
-        ThinLens {
-            radius: self.lens_radius,
-            focal_distance: self.focal_distance,
-        }
-    }
-
-    /// How the scene's lights and BSDFs behave under these flags.
-    pub fn world_options(&self) -> WorldOptions {
-        WorldOptions {
-            light_convention: if self.course_lights {
-                LightConvention::Course
-            } else {
-                LightConvention::Physical
-            },
-            bsdf: BsdfOptions {
-                fresnel: if self.schlick {
-                    FresnelModel::Schlick
-                } else {
-                    FresnelModel::Exact
-                },
-                microfacet: self.microfacet_sampling.into(),
-            },
-            light_choice: self.light_choice.into(),
-        }
-    }
-
-    /// The sampler: `--sampler`, independent with `--course`.
-    pub fn sampler_kind(&self) -> SamplerKind {
-        if self.course {
-            SamplerKind::Independent
-        } else {
-            self.sampler.into()
-        }
-    }
-
-    /// The Russian roulette rule: `--roulette`, fixed with `--course`.
-    pub fn roulette(&self) -> Roulette {
-        if self.course {
-            Roulette::Fixed
-        } else {
-            self.roulette.into()
-        }
-    }
-
-    /// The render settings these flags ask for (progress bar on).
-    pub fn render_settings(&self) -> RenderSettings {
-        RenderSettings {
-            width: self.width(),
-            height: self.height(),
-            samples_per_pixel: self.samples(),
-            threads: self.threads.map(usize::from),
-            seed: self.seed,
-            sampler: self.sampler_kind(),
-            progress: true,
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::adaptive::Adaptive;
+    use crate::global::Roulette;
     use crate::materials::MicrofacetSampling;
+    use crate::sampling::SamplerKind;
 
     #[test]
     fn course_flags_parse() {

@@ -3,6 +3,7 @@
 
 pub mod args;
 pub mod drivers;
+pub mod settings;
 pub mod values;
 
 pub use args::CourseArgs;
