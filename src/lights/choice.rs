@@ -72,18 +72,19 @@ pub struct LightStrategy {
 impl LightChoice {
     /// The choice `rule` makes for `lights` in a scene of radius `scene_radius`.
     pub fn new(rule: LightChoiceRule, lights: &[Light], scene_radius: f32) -> Self {
+        let power: Vec<f32> = lights
+            .iter()
+            .map(|l| luminance(l.power(scene_radius)))
+            .collect();
         let by_power = match rule {
-            LightChoiceRule::Auto => lights.len() > MANY_LIGHTS,
+            // Lights of no power are never sampled, so they do not count.
+            LightChoiceRule::Auto => power.iter().filter(|&&p| p > 0.0).count() > MANY_LIGHTS,
             LightChoiceRule::EveryLight => false,
             LightChoiceRule::ByPower => true,
         };
         if !by_power || lights.is_empty() {
             return LightChoice::EveryLight;
         }
-        let power: Vec<f32> = lights
-            .iter()
-            .map(|l| luminance(l.power(scene_radius)))
-            .collect();
         LightChoice::ByPower(Distribution1D::new(&power))
     }
 
