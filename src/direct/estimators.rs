@@ -149,7 +149,7 @@ impl DirectLights {
         strategy: LightStrategy,
     ) -> Rgb {
         let wi_local = point.frame.to_local(sample.wi);
-        let f = point.bsdf.f(point.wo, wi_local);
+        let (f, bsdf_pdf) = point.bsdf.eval(point.wo, wi_local);
         if f == Rgb::ZERO || sample.radiance == Rgb::ZERO {
             return Rgb::ZERO;
         }
@@ -167,7 +167,6 @@ impl DirectLights {
         let weight = match sample.pdf {
             LightPdf::Delta => 1.0 / chosen,
             LightPdf::SolidAngle(pdf) if self.mis => {
-                let bsdf_pdf = point.bsdf.pdf(point.wo, wi_local);
                 let light_pdf = chosen * pdf;
                 power_heuristic(strategy.samples as f32, light_pdf, 1.0, bsdf_pdf) / light_pdf
             }

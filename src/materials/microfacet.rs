@@ -35,6 +35,15 @@ use super::{fresnel, BsdfSample, MicrofacetSampling};
 use crate::math::warp::{cosine_hemisphere_pdf, sample_cosine_hemisphere};
 use crate::math::Rgb;
 
+/// What [`Conductor::f`] and [`Conductor::pdf`] share.
+struct HalfTerms {
+    h: Vec3,
+    /// `wo.h = wi.h`.
+    cos_h: f32,
+    d: f64,
+    lambda_o: f64,
+}
+
 /// A rough metal with Beckmann roughness and complex index `eta + i k`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Conductor {
@@ -69,54 +78,75 @@ impl Conductor {
         }
     }
 
-    /// `F G D / (4 cos_o cos_i)` when both directions are above the surface.
-    pub fn f(&self, wo: Vec3, wi: Vec3) -> Rgb {
+    /// The terms `f` and `pdf` share for two directions above the surface:
+    /// the half vector, `D(h)` and `Lambda(wo)`; `None` when a direction is
+    /// below the surface or the two are opposite.
+    fn half_terms(&self, wo: Vec3, wi: Vec3) -> Option<HalfTerms> {
         if wo.z <= 0.0 || wi.z <= 0.0 {
-            return Rgb::ZERO;
+            return None;
         }
-        let Some((h, cos_h)) = half_vector(wo, wi) else {
-            return Rgb::ZERO;
-        };
-        let b = &self.distribution;
+        let (h, cos_h) = half_vector(wo, wi)?;
+        Some(HalfTerms {
+            h,
+            cos_h,
+            d: f64::from(self.distribution.d(h)),
+            lambda_o: f64::from(self.distribution.lambda(wo)),
+        })
+    }
+
+    /// `F G D / (4 cos_o cos_i)` with `G = 1 / (1 + Lambda(wo) + Lambda(wi))`.
+    fn value(&self, terms: &HalfTerms, wo: Vec3, wi: Vec3) -> Rgb {
+        let lambda_i = f64::from(self.distribution.lambda(wi));
         let scalar =
-            f64::from(b.g(wo, wi)) * f64::from(b.d(h)) / (4.0 * f64::from(wo.z) * f64::from(wi.z));
+            terms.d / ((1.0 + terms.lambda_o + lambda_i) * 4.0 * f64::from(wo.z) * f64::from(wi.z));
         if !scalar.is_finite() {
             return Rgb::ZERO;
         }
-        fresnel::conductor(cos_h, self.eta, self.k) * scalar as f32
+        fresnel::conductor(terms.cos_h, self.eta, self.k) * scalar as f32
     }
 
-    /// Density per steradian of the half vector `h` (with `wo.h = cos_h`)
-    /// under the chosen strategy.
-    /// Not called for `CosineHemisphere`, which samples no half vector.
-    fn pdf_h(&self, wo: Vec3, h: Vec3, cos_h: f32) -> f32 {
-        match self.sampling {
-            MicrofacetSampling::HalfVector => self.distribution.pdf_h(h),
-            MicrofacetSampling::VisibleNormals => self.distribution.visible_density(wo, h, cos_h),
-            MicrofacetSampling::CosineHemisphere => 0.0,
-        }
-    }
-
-    /// Density per steradian with which [`Conductor::sample`] returns `wi`.
-    pub fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
-        if wo.z <= 0.0 || wi.z <= 0.0 {
+    /// The density of `wi` under the chosen strategy, `p(h) / (4 wo.h)`:
+    /// `D(h) cos(theta_h) / (4 wo.h)` for the half vector, and for visible
+    /// normals, with `p(h) = G1(wo) (wo.h) D(h) / wo.z`, the `wo.h` cancels:
+    /// `D(h) / (4 wo.z (1 + Lambda(wo)))`.
+    fn density(&self, terms: &HalfTerms, wo: Vec3, wi: Vec3) -> f32 {
+        if terms.cos_h <= 0.0 {
             return 0.0;
         }
-        if self.sampling == MicrofacetSampling::CosineHemisphere {
-            return cosine_hemisphere_pdf(wi);
-        }
-        let Some((h, cos_oh)) = half_vector(wo, wi) else {
-            return 0.0;
+        let p = match self.sampling {
+            MicrofacetSampling::HalfVector => {
+                terms.d * f64::from(terms.h.z) / (4.0 * f64::from(terms.cos_h))
+            }
+            MicrofacetSampling::VisibleNormals => {
+                terms.d / (4.0 * f64::from(wo.z) * (1.0 + terms.lambda_o))
+            }
+            MicrofacetSampling::CosineHemisphere => return cosine_hemisphere_pdf(wi),
         };
-        if cos_oh <= 0.0 {
-            return 0.0;
-        }
-        let p = f64::from(self.pdf_h(wo, h, cos_oh)) / (4.0 * f64::from(cos_oh));
         if p.is_finite() {
             p as f32
         } else {
             0.0
         }
+    }
+
+    /// `F G D / (4 cos_o cos_i)` when both directions are above the surface.
+    pub fn f(&self, wo: Vec3, wi: Vec3) -> Rgb {
+        self.half_terms(wo, wi)
+            .map_or(Rgb::ZERO, |terms| self.value(&terms, wo, wi))
+    }
+
+    /// Density per steradian with which [`Conductor::sample`] returns `wi`.
+    pub fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
+        self.half_terms(wo, wi)
+            .map_or(0.0, |terms| self.density(&terms, wo, wi))
+    }
+
+    /// `f(wo, wi)` and `pdf(wo, wi)` at once: one half vector, one `D` and
+    /// one `Lambda(wo)` for both.
+    pub fn eval(&self, wo: Vec3, wi: Vec3) -> (Rgb, f32) {
+        self.half_terms(wo, wi).map_or((Rgb::ZERO, 0.0), |terms| {
+            (self.value(&terms, wo, wi), self.density(&terms, wo, wi))
+        })
     }
 
     /// Draws `h` by the chosen strategy and reflects `wo` about it; `None`
@@ -142,8 +172,8 @@ impl Conductor {
         }
         // Density and value from (wo, wi) alike, so that the weight is
         // exactly the ratio pdf() and f() give for this pair.
-        let pdf = self.pdf(wo, wi);
-        BsdfSample::reflection(self.f(wo, wi), wi, pdf)
+        let (f, pdf) = self.eval(wo, wi);
+        BsdfSample::reflection(f, wi, pdf)
     }
 
     /// `wi` cosine-weighted on the hemisphere, whatever the lobe.

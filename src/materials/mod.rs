@@ -10,7 +10,8 @@
 //!   chooses a lobe) and `u` (a 2D number within the lobe), as a
 //!   [`BsdfSample`] that says how it was drawn;
 //! - `pdf(wo, wi)`: the density per steradian with which `sample` draws a
-//!   given `wi` (0 for a delta lobe), for multiple importance sampling.
+//!   given `wi` (0 for a delta lobe), for multiple importance sampling;
+//!   `eval(wo, wi)` gives `f` and `pdf` at once, sharing their common work.
 //!
 //! The estimator of one bounce is `f |cos theta_i| / pdf` in every case
 //! ([`BsdfSample::weight`]): a delta lobe's `f` holds its weight divided by
@@ -217,6 +218,17 @@ impl Bsdf {
             Bsdf::Refraction(r) => r.sample(wo),
             Bsdf::Glass(g) => g.sample(wo, uc),
             Bsdf::Conductor(c) => c.sample(wo, u),
+        }
+    }
+
+    /// `f(wo, wi)` and `pdf(wo, wi)` together (what a light sample weighed
+    /// by multiple importance needs), sharing the work the two have in
+    /// common (pbrt-v4 asks for them apart; Mitsuba's `eval_pdf` at once).
+    pub fn eval(&self, wo: Vec3, wi: Vec3) -> (Rgb, f32) {
+        match self {
+            Bsdf::Diffuse(d) => (d.f(wo, wi), d.pdf(wo, wi)),
+            Bsdf::Conductor(c) => c.eval(wo, wi),
+            _ => (Rgb::ZERO, 0.0),
         }
     }
 
