@@ -1,5 +1,5 @@
 //! Shared mathematics: colours, orthonormal frames, warps, piecewise-constant
-//! distributions and floating-point helpers.
+//! distributions, floating-point helpers and special functions.
 //!
 //! Geometry is `f32` ([`glam::Vec3`]); colours are linear RGB in a [`Rgb`].
 
@@ -10,6 +10,7 @@ pub mod frame;
 pub mod mis;
 pub mod prefetch;
 pub mod rng;
+pub mod special;
 pub mod warp;
 
 pub use color::{luminance, Rgb};
