@@ -14,7 +14,7 @@ use pathtracer::math::Rgb;
 use pathtracer::render::{render_image, Rendered};
 use pathtracer::world::{World, WorldOptions};
 
-use crate::measure::Setup;
+use crate::setup::Setup;
 
 /// Direct lighting from the scene's lights alone (part 3 less the
 /// emission the camera sees, which both share): the library's

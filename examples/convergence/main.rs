@@ -28,6 +28,7 @@ mod course;
 mod measure;
 mod plot;
 mod sampling;
+mod setup;
 mod studies;
 
 use std::error::Error;

@@ -14,7 +14,8 @@ use pathtracer::direct::DirectLights;
 use pathtracer::global::{DirectStrategy, PathTracer, Roulette};
 use pathtracer::sampling::SamplerKind;
 
-use crate::measure::{Measurement, Reference, Setup};
+use crate::measure::{Measurement, Reference};
+use crate::setup::Setup;
 use crate::studies::{Options, Result};
 
 const ROUNDS: u64 = 3;

@@ -1,0 +1,316 @@
+//! The table of direction samplers under test ([`families`]): every warp,
+//! BSDF, light and environment sampler of the library, each with its
+//! density and the grid its histogram is taken on.
+
+use std::f64::consts::PI;
+
+use glam::{Vec2, Vec3};
+use pathtracer::environment::{
+    uv_to_direction, EnvironmentLight, EnvironmentMap, EnvironmentSampling,
+};
+use pathtracer::lights::{Light as SampledLight, LightConvention, LightPdf};
+use pathtracer::materials::{Conductor, Diffuse, MicrofacetSampling};
+use pathtracer::math::distribution::Distribution2D;
+use pathtracer::math::warp::{
+    cosine_hemisphere_pdf, sample_cosine_hemisphere, sample_uniform_hemisphere,
+    sample_uniform_sphere, uniform_hemisphere_pdf, uniform_sphere_pdf,
+};
+use pathtracer::math::Frame;
+use pathtracer::scene::Light;
+
+use crate::common::{rect_corners, rect_light};
+
+/// A sampler of unit directions with its density per steradian.
+pub struct Family {
+    pub name: String,
+    /// A direction (world space) and the density the sampler reports for
+    /// it, or `None` when the sampler gives nothing.
+    pub sample: Box<dyn Fn(Vec2) -> Option<(Vec3, f64)>>,
+    /// The density function, per steradian.
+    pub pdf: Box<dyn Fn(Vec3) -> f64>,
+    /// Frame of the histogram grid (its +Z is the grid's pole).
+    pub frame: Frame,
+    /// The grid covers `[cos_min, 1] x [0, 2 pi)`; unless `lossy`, the
+    /// density vanishes for `cos theta < cos_min` in that frame.
+    pub cos_min: f64,
+    /// Whether the sampler may refuse draws and sample off the grid: the
+    /// density is then a sub-density of the kept draws. A lossy family's
+    /// grid is uniform in `theta` rather than `cos theta` (see
+    /// [`radial`](crate::quadrature::radial)).
+    pub lossy: bool,
+}
+
+/// The family of `Light::sample_li` / `Light::pdf_li` for `light` seen from `p`.
+/// The grid's pole points at the light's centre (area light) or up (sky),
+/// and `cos_min` bounds the light's extent (for a rectangle the largest
+/// angle from the pole is at a corner, as the region within a cone is
+/// convex on the light's plane).
+fn light_family(name: &str, light: Light, p: Vec3) -> Family {
+    let sampled = SampledLight::from_scene(&light, LightConvention::Physical);
+    let queried = sampled.clone();
+    let (frame, cos_min) = match light {
+        Light::Area { center, .. } => {
+            let axis = (center - p).normalize();
+            let cos_min = rect_corners(&light)
+                .iter()
+                .map(|&q| (q - p).normalize().dot(axis) as f64)
+                .fold(1.0, f64::min);
+            (Frame::from_z(axis), (cos_min - 1e-3).max(-1.0))
+        }
+        _ => (Frame::from_z(Vec3::Y), 0.0),
+    };
+    Family {
+        name: name.into(),
+        sample: Box::new(move |u| {
+            let s = sampled.sample_li(p, 0.5, u)?;
+            match s.pdf {
+                LightPdf::SolidAngle(pdf) => Some((s.wi, pdf as f64)),
+                LightPdf::Delta => None,
+            }
+        }),
+        pdf: Box::new(move |w| queried.pdf_li(p, w, None) as f64),
+        frame,
+        cos_min,
+        lossy: false,
+    }
+}
+
+/// A warp of the unit square to directions around +Z with its density,
+/// which vanishes below `cos_min`.
+fn warp_family(name: &str, sample: fn(Vec2) -> Vec3, pdf: fn(Vec3) -> f32, cos_min: f64) -> Family {
+    Family {
+        name: name.into(),
+        sample: Box::new(move |u| {
+            let w = sample(u);
+            Some((w, pdf(w) as f64))
+        }),
+        pdf: Box::new(move |w| pdf(w) as f64),
+        frame: Frame::from_z(Vec3::Z),
+        cos_min,
+        lossy: false,
+    }
+}
+
+/// The rough conductor's direction sampler for `wo` at `cos theta_o =
+/// cos_o` (azimuth 2 rad, so that the visible-normal sampler's rotation is
+/// exercised), gridded on a cap of radius `4 alpha` around the mirror
+/// direction.
+fn conductor_family(alpha: f32, cos_o: f32, sampling: MicrofacetSampling) -> Family {
+    let sin_o = (1.0 - cos_o * cos_o).max(0.0).sqrt();
+    let wo = Vec3::new(sin_o * 2f32.cos(), sin_o * 2f32.sin(), cos_o);
+    let copper = Conductor::new(
+        alpha,
+        Vec3::new(0.2, 1.0, 1.2),
+        Vec3::new(3.0, 2.5, 2.4),
+        sampling,
+    );
+    Family {
+        name: format!("conductor, {sampling:?}, alpha {alpha}, wo.z {cos_o}"),
+        sample: Box::new(move |u| {
+            let s = copper.sample(wo, u)?;
+            Some((s.wi, s.pdf() as f64))
+        }),
+        pdf: Box::new(move |w| copper.pdf(wo, w) as f64),
+        frame: Frame::from_z(Vec3::new(-wo.x, -wo.y, wo.z)),
+        cos_min: (4.0 * f64::from(alpha)).min(PI).cos(),
+        lossy: true,
+    }
+}
+
+/// Conductor families: both strategies, smooth to rough, normal to grazing.
+fn conductor_families() -> Vec<Family> {
+    let mut families = Vec::new();
+    for sampling in [
+        MicrofacetSampling::HalfVector,
+        MicrofacetSampling::VisibleNormals,
+    ] {
+        for alpha in [0.01, 0.1, 0.5, 1.0] {
+            for cos_o in [1.0, 0.5, 0.05] {
+                families.push(conductor_family(alpha, cos_o, sampling));
+            }
+        }
+    }
+    // The cosine-weighted baseline ignores the lobe; two roughnesses.
+    for alpha in [0.1, 1.0] {
+        for cos_o in [1.0, 0.5] {
+            families.push(conductor_family(
+                alpha,
+                cos_o,
+                MicrofacetSampling::CosineHemisphere,
+            ));
+        }
+    }
+    families
+}
+
+/// A 2D distribution of `width x height` cells of `f(i, j)`, carried to
+/// the sphere by the equal-area map `z = 1 - 2 v`, `phi = 2 pi u` (whose
+/// Jacobian is the constant `4 pi`), so that the direction tests check its
+/// sampler and density: `p(w) = p(u, v) / (4 pi)`.
+fn distribution_family(
+    name: &str,
+    width: usize,
+    height: usize,
+    f: impl Fn(usize, usize) -> f32,
+) -> Family {
+    let func: Vec<f32> = (0..width * height)
+        .map(|k| f(k % width, k / width))
+        .collect();
+    let d = std::rc::Rc::new(Distribution2D::new(&func, width, height));
+    let queried = d.clone();
+    let to_sphere = |uv: Vec2| {
+        let z = 1.0 - 2.0 * uv.y;
+        let r = (1.0 - z * z).max(0.0).sqrt();
+        let phi = 2.0 * std::f32::consts::PI * uv.x;
+        Vec3::new(r * phi.cos(), r * phi.sin(), z)
+    };
+    let to_square = |w: Vec3| {
+        let phi = (w.y as f64).atan2(w.x as f64).rem_euclid(2.0 * PI);
+        Vec2::new((phi / (2.0 * PI)) as f32, 0.5 * (1.0 - w.z))
+    };
+    Family {
+        name: name.into(),
+        sample: Box::new(move |u| {
+            let s = d.sample(u);
+            Some((to_sphere(s.x), s.pdf as f64 / (4.0 * PI)))
+        }),
+        pdf: Box::new(move |w| queried.pdf(to_square(w)) as f64 / (4.0 * PI)),
+        frame: Frame::from_z(Vec3::Z),
+        cos_min: -1.0,
+        lossy: false,
+    }
+}
+
+/// The environment light's sampler on `map`, with its grid's pole on +Y
+/// and its `phi` the map's (local x = -X, y = +Z), so that the grid's
+/// sectors fall on the map's columns (the density jumps only between
+/// cells, and the quadrature of the expected counts then meets those
+/// jumps only between rows).
+fn environment_family(name: &str, map: EnvironmentMap, sampling: EnvironmentSampling) -> Family {
+    let light = EnvironmentLight::new(map, sampling);
+    let queried = light.clone();
+    Family {
+        name: name.into(),
+        sample: Box::new(move |u| {
+            let s = light.sample_li(u)?;
+            match s.pdf {
+                LightPdf::SolidAngle(pdf) => Some((s.wi, pdf as f64)),
+                LightPdf::Delta => None,
+            }
+        }),
+        pdf: Box::new(move |w| queried.pdf_li(w) as f64),
+        frame: Frame {
+            x: -Vec3::X,
+            y: Vec3::Z,
+            z: Vec3::Y,
+        },
+        cos_min: -1.0,
+        lossy: false,
+    }
+}
+
+/// A 64 x 32 map: a gradient, a bright lobe, and a black band.
+fn lumpy_map() -> EnvironmentMap {
+    let lobe = Vec3::new(0.5, 0.6, -0.62).normalize();
+    let texels = (0..64 * 32)
+        .map(|k| {
+            let (i, j) = (k % 64, k / 64);
+            let d = uv_to_direction(Vec2::new((i as f32 + 0.5) / 64.0, (j as f32 + 0.5) / 32.0));
+            if j == 10 || j == 11 {
+                return Vec3::ZERO;
+            }
+            Vec3::new(0.3, 0.5, 0.8) * (1.0 + d.y)
+                + Vec3::splat(30.0 * (-(1.0 - d.dot(lobe)) / 0.05).exp())
+        })
+        .collect();
+    EnvironmentMap::new("lumpy", 64, 32, texels).unwrap()
+}
+
+/// The distributions and environment samplers.
+fn environment_families() -> Vec<Family> {
+    vec![
+        distribution_family("2D distribution, 24 x 12, empty cells", 24, 12, |i, j| {
+            if (i + j) % 5 == 0 {
+                0.0
+            } else {
+                1.0 + ((i * 7 + j * 3) % 11) as f32
+            }
+        }),
+        distribution_family("2D distribution, 1 x 3", 1, 3, |_, j| [2.0, 0.0, 1.0][j]),
+        environment_family(
+            "environment, lumpy map, importance",
+            lumpy_map(),
+            EnvironmentSampling::Importance,
+        ),
+        environment_family(
+            "environment, lumpy map, uniform",
+            lumpy_map(),
+            EnvironmentSampling::Uniform,
+        ),
+    ]
+}
+
+/// Every direction sampler of the library.
+pub fn families() -> Vec<Family> {
+    let diffuse = Diffuse {
+        albedo: Vec3::splat(0.7),
+    };
+    let wo = Vec3::new(0.3, -0.2, 0.9).normalize();
+    let mut families = vec![
+        warp_family(
+            "uniform hemisphere",
+            sample_uniform_hemisphere,
+            uniform_hemisphere_pdf,
+            0.0,
+        ),
+        warp_family(
+            "cosine hemisphere",
+            sample_cosine_hemisphere,
+            cosine_hemisphere_pdf,
+            0.0,
+        ),
+        warp_family(
+            "uniform sphere",
+            sample_uniform_sphere,
+            |_| uniform_sphere_pdf(),
+            -1.0,
+        ),
+        Family {
+            name: "diffuse BSDF".into(),
+            sample: Box::new(move |u| {
+                let s = diffuse.sample(wo, u)?;
+                Some((s.wi, s.pdf() as f64))
+            }),
+            pdf: Box::new(move |w| diffuse.pdf(wo, w) as f64),
+            frame: Frame::from_z(Vec3::Z),
+            cos_min: 0.0,
+            lossy: false,
+        },
+        light_family(
+            "area light, far and oblique",
+            rect_light(
+                1.0,
+                Vec3::new(0.7, 2.0, -0.4),
+                Vec3::new(-0.5, -1.0, 0.6),
+                0.6,
+                0.8,
+            ),
+            Vec3::new(0.1, 0.0, 0.2),
+        ),
+        light_family(
+            "area light, near and large",
+            rect_light(1.0, Vec3::new(0.2, 0.4, 0.1), -Vec3::Y, 1.5, 1.0),
+            Vec3::ZERO,
+        ),
+        light_family(
+            "ambient sky",
+            Light::Ambient {
+                radiance: Vec3::ONE,
+            },
+            Vec3::new(3.0, -1.0, 2.0),
+        ),
+    ];
+    families.extend(conductor_families());
+    families.extend(environment_families());
+    families
+}
