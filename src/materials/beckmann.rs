@@ -185,16 +185,10 @@ impl Beckmann {
     /// Density of [`Beckmann::sample_visible`], per steradian of `h`:
     /// `G1(wo) max(0, wo.h) D(h) / wo.z`.
     pub fn pdf_visible(&self, wo: Vec3, h: Vec3) -> f32 {
-        self.visible_density(wo, h, wo.dot(h))
-    }
-
-    /// [`Beckmann::pdf_visible`] with `wo.h` given (for a caller that knows
-    /// it more accurately than the rounded `h` does).
-    pub fn visible_density(&self, wo: Vec3, h: Vec3, cos_oh: f32) -> f32 {
         if wo.z <= 0.0 {
             return 0.0;
         }
-        let p = f64::from(self.g1(wo)) * f64::from(cos_oh.max(0.0)) * f64::from(self.d(h))
+        let p = f64::from(self.g1(wo)) * f64::from(wo.dot(h).max(0.0)) * f64::from(self.d(h))
             / f64::from(wo.z);
         p as f32
     }
