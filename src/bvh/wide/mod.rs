@@ -26,8 +26,8 @@
 //! The SIMD comes from glam's `Vec4` and `BVec4A`, which compile to SSE2 on
 //! x86-64 (part of the base instruction set, so no runtime detection is
 //! needed), to NEON on aarch64, and to plain scalar code elsewhere: no
-//! `unsafe` (but for the prefetch hint of [`crate::math::prefetch`]), and
-//! the same binary runs on any x86-64.
+//! `unsafe` (but for the hints of [`crate::math::prefetch`] and
+//! [`crate::math::huge_pages`]), and the same binary runs on any x86-64.
 //!
 //! Measured against the binary BVH and Embree in `docs/03-bvh.md`.
 
