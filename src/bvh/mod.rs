@@ -24,7 +24,7 @@
 //!   triangles).
 //! - [`BvhAccel`]: the BVH over a scene's primitives, an [`Intersector`](crate::intersect::Intersector).
 //! - [`wide`]: the fast version the renderers use, [`WideBvhAccel`]: the
-//!   same build collapsed to four children per node, with SIMD box and
+//!   same build collapsed to eight children per node, with SIMD box and
 //!   triangle tests and the same hits.
 
 pub mod accel;

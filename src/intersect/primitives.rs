@@ -123,15 +123,16 @@ impl Primitives {
                 radius: s.radius,
             })
         });
-        let triangle_shading = mesh
-            .triangles
-            .iter()
-            .zip(&mesh.materials)
-            .map(|(corners, &material)| TriangleShading {
+        // Read once per hit, at scattered ids: huge pages spare the TLB
+        // misses (`math::huge_pages`).
+        let mut triangle_shading = Vec::with_capacity(mesh.triangles.len());
+        crate::math::huge_pages::advise(&triangle_shading);
+        triangle_shading.extend(mesh.triangles.iter().zip(&mesh.materials).map(
+            |(corners, &material)| TriangleShading {
                 normals: corners.map(|v| mesh.normals[v as usize]),
                 material,
-            })
-            .collect();
+            },
+        ));
         Primitives {
             shapes: triangles.chain(spheres).collect(),
             triangle_test: TriangleTest::default(),

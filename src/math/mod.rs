@@ -7,6 +7,7 @@ pub mod color;
 pub mod distribution;
 pub mod float;
 pub mod frame;
+pub mod huge_pages;
 pub mod mis;
 pub mod prefetch;
 pub mod rng;

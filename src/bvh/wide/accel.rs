@@ -1,5 +1,5 @@
 //! The wide BVH as an [`Intersector`]: the binary SAH build
-//! ([`crate::bvh::build`]), collapsed to four children per node
+//! ([`crate::bvh::build`]), collapsed to eight children per node
 //! ([`super::collapse`]), with its triangles in SIMD packs.
 //!
 //! Triangles go through the lane-wise watertight test; spheres (and every
@@ -16,7 +16,7 @@ use crate::bvh::build::{build, BuildOptions};
 use crate::bvh::{Bvh, ValidationError};
 use crate::intersect::{Hit, Intersector, Primitives, Ray, Shape, ShapeHit, TriangleTest};
 
-/// A four-wide BVH over a scene's primitives.
+/// An eight-wide BVH over a scene's primitives.
 pub struct WideBvhAccel {
     pub wide: WideBvh,
     pub primitives: Primitives,

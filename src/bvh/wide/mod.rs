@@ -1,20 +1,23 @@
-//! The fast BVH: four children per node, SIMD box tests, triangles tested
+//! The fast BVH: eight children per node, SIMD box tests, triangles tested
 //! four at a time. Part 2's binary [`Bvh`](super::Bvh) stays the readable
 //! teaching version; this one is collapsed from it and finds the same hits
 //! (same watertight test, bit for bit), only faster.
 //!
 //! Why wider nodes help (Dammertz, Hanika and Keller, "Shallow Bounding
 //! Volume Hierarchies for Fast SIMD Ray Tracing of Incoherent Rays", 2008;
-//! Wald, Benthin and Boulos, "Getting Rid of Packets", 2008): one ray is
-//! tested against the four boxes of a node in one 4-lane slab test, which
-//! costs about what one box costs, and the tree has about half as many
-//! levels, so a ray visits fewer nodes and waits on memory fewer times.
+//! Wald, Benthin and Boulos, "Getting Rid of Packets", 2008; Ernst and
+//! Greiner, "Multi Bounding Volume Hierarchies", 2008): one ray is tested
+//! against the eight boxes of a node in two independent 4-lane slab
+//! tests, which cost little more than one box, and the tree has about a
+//! third as many levels as a binary one, so a ray visits fewer nodes and
+//! waits on memory fewer times (eight children rather than four: 1.05-1.15x
+//! the rays per second on the benchmark, `docs/03-bvh.md`).
 //!
-//! - [`node`]: the 128-byte [`WideNode`] (two cache lines: the boxes of its
-//!   four children stored plane by plane, one `Vec4` per plane, and four
+//! - [`node`]: the 256-byte [`WideNode`] (four cache lines: the boxes of its
+//!   eight children stored plane by plane, two `Vec4` per plane, and eight
 //!   links) and the ray-versus-four-boxes slab test.
 //! - [`collapse`]: the wide tree from the binary SAH tree, pulling up
-//!   grandchildren by largest surface area until a node has four children.
+//!   grandchildren by largest surface area until a node has eight children.
 //! - [`leaf`]: triangles packed four to a [`TrianglePack`] (structure of
 //!   arrays), and the watertight test of
 //!   [`crate::intersect::triangle`] run on the four lanes at once.
@@ -26,8 +29,8 @@
 //! The SIMD comes from glam's `Vec4` and `BVec4A`, which compile to SSE2 on
 //! x86-64 (part of the base instruction set, so no runtime detection is
 //! needed), to NEON on aarch64, and to plain scalar code elsewhere: no
-//! `unsafe` (but for the prefetch hint of [`crate::math::prefetch`]), and
-//! the same binary runs on any x86-64.
+//! `unsafe` (but for the hints of [`crate::math::prefetch`] and
+//! [`crate::math::huge_pages`]), and the same binary runs on any x86-64.
 //!
 //! Measured against the binary BVH and Embree in `docs/03-bvh.md`.
 
@@ -44,8 +47,11 @@ pub use node::WideNode;
 
 use crate::intersect::Aabb;
 
-/// Children per node, and triangles per pack.
+/// Triangles per pack (SIMD lanes).
 pub const WIDTH: usize = 4;
+
+/// Children per node.
+pub const ARITY: usize = 8;
 
 /// A child of a wide node: an interior node, a leaf's packs, or nothing.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -1,8 +1,11 @@
-//! A wide node and the slab test of one ray against its four child boxes.
+//! A wide node and the slab test of one ray against its eight child boxes.
 //!
-//! Layout: `planes[a]` holds the four children's minima along axis `a`
-//! (lane `i` is child `i`), `planes[3 + a]` their maxima; then the four
-//! links. 6 x 16 + 4 x 8 = 128 bytes, two cache lines.
+//! Layout: `planes[a]` holds the eight children's minima along axis `a`
+//! as two groups of four lanes (group `g`, lane `i` is child `4 g + i`),
+//! `planes[3 + a]` their maxima; then the eight links. 6 x 32 + 8 x 8 =
+//! 256 bytes, four cache lines. The two groups are tested one after the
+//! other with the same 4-lane code; they do not depend on each other, so
+//! the processor overlaps their arithmetic.
 //!
 //! The slab test (Kay and Kajiya 1986, as in [`crate::intersect::Aabb`]),
 //! with the near and far planes chosen once per ray by the sign of the
@@ -35,7 +38,7 @@
 
 use glam::{Vec3, Vec4};
 
-use super::{WideLink, WIDTH};
+use super::{WideLink, ARITY};
 use crate::intersect::Aabb;
 use crate::math::float::gamma;
 
@@ -44,10 +47,14 @@ use crate::math::float::gamma;
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[repr(C, align(64))]
 pub struct WideNode {
-    /// `[min x, min y, min z, max x, max y, max z]`, lane `i` for child `i`.
-    pub planes: [Vec4; 6],
-    pub children: [WideLink; WIDTH],
+    /// `[min x, min y, min z, max x, max y, max z]`; group `g`, lane `i`
+    /// is child `4 g + i`.
+    pub planes: [[Vec4; GROUPS]; 6],
+    pub children: [WideLink; ARITY],
 }
+
+/// Groups of four lanes in a node: [`ARITY`] / 4.
+pub const GROUPS: usize = ARITY / 4;
 
 /// A ray prepared for box tests: origin and inverse direction splatted
 /// across the lanes, and which plane of each axis is entered first.
@@ -78,16 +85,18 @@ impl RayBoxes {
 }
 
 impl WideNode {
-    /// A node over up to four children; missing slots are left empty.
+    /// A node over up to [`ARITY`] children; missing slots are left empty.
     pub fn new(children: &[(Aabb, WideLink)]) -> Self {
-        assert!(children.len() <= WIDTH, "at most {WIDTH} children");
-        let mut boxes = [Aabb::EMPTY; WIDTH];
-        let mut links = [WideLink::EMPTY; WIDTH];
+        assert!(children.len() <= ARITY, "at most {ARITY} children");
+        let mut boxes = [Aabb::EMPTY; ARITY];
+        let mut links = [WideLink::EMPTY; ARITY];
         for (i, &(b, l)) in children.iter().enumerate() {
             boxes[i] = b;
             links[i] = l;
         }
-        let lanes = |f: &dyn Fn(&Aabb) -> f32| Vec4::from_array(boxes.each_ref().map(f));
+        let lanes = |f: &dyn Fn(&Aabb) -> f32| {
+            std::array::from_fn(|g| Vec4::from_array(std::array::from_fn(|i| f(&boxes[4 * g + i]))))
+        };
         WideNode {
             planes: [
                 lanes(&|b| b.min.x),
@@ -103,7 +112,7 @@ impl WideNode {
 
     /// The box of child `i`.
     pub fn child_bounds(&self, i: usize) -> Aabb {
-        let p = self.planes.map(|v| v.to_array()[i]);
+        let p = self.planes.map(|v| v[i / 4].to_array()[i % 4]);
         Aabb {
             min: Vec3::new(p[0], p[1], p[2]),
             max: Vec3::new(p[3], p[4], p[5]),
@@ -112,22 +121,29 @@ impl WideNode {
 
     /// Which children the ray meets within `[ray.t_min, t_max]` (bit `i`
     /// for child `i`) and the entry distance into each (valid for those).
+    /// The groups of four are independent, so their arithmetic overlaps.
     #[inline(always)]
-    pub fn hit(&self, ray: &RayBoxes, t_max: f32) -> (u32, Vec4) {
-        let mut enter = Vec4::splat(ray.t_min);
-        let mut exit = Vec4::INFINITY;
-        for a in 0..3 {
-            let mut near = (self.planes[ray.near[a]] - ray.origin[a]) * ray.inv_dir[a];
-            let mut far = (self.planes[ray.far[a]] - ray.origin[a]) * ray.inv_dir[a];
-            if ray.has_zero_direction {
-                near = Vec4::select(near.is_nan_mask(), Vec4::NEG_INFINITY, near);
-                far = Vec4::select(far.is_nan_mask(), Vec4::INFINITY, far);
+    pub fn hit(&self, ray: &RayBoxes, t_max: f32) -> (u32, [f32; ARITY]) {
+        let mut mask = 0;
+        let mut entries = [0.0; ARITY];
+        for g in 0..GROUPS {
+            let mut enter = Vec4::splat(ray.t_min);
+            let mut exit = Vec4::INFINITY;
+            for a in 0..3 {
+                let mut near = (self.planes[ray.near[a]][g] - ray.origin[a]) * ray.inv_dir[a];
+                let mut far = (self.planes[ray.far[a]][g] - ray.origin[a]) * ray.inv_dir[a];
+                if ray.has_zero_direction {
+                    near = Vec4::select(near.is_nan_mask(), Vec4::NEG_INFINITY, near);
+                    far = Vec4::select(far.is_nan_mask(), Vec4::INFINITY, far);
+                }
+                enter = enter.max(near);
+                exit = exit.min(far);
             }
-            enter = enter.max(near);
-            exit = exit.min(far);
+            let exit = (exit * (1.0 + 2.0 * gamma(3))).min(Vec4::splat(t_max));
+            mask |= enter.cmple(exit).bitmask() << (4 * g);
+            entries[4 * g..4 * g + 4].copy_from_slice(&enter.to_array());
         }
-        let exit = (exit * (1.0 + 2.0 * gamma(3))).min(Vec4::splat(t_max));
-        (enter.cmple(exit).bitmask(), enter)
+        (mask, entries)
     }
 }
 
@@ -136,8 +152,8 @@ mod tests {
     use super::*;
 
     #[test]
-    fn a_node_is_two_cache_lines() {
-        assert_eq!(std::mem::size_of::<WideNode>(), 128);
+    fn a_node_is_four_cache_lines() {
+        assert_eq!(std::mem::size_of::<WideNode>(), 256);
         assert_eq!(std::mem::align_of::<WideNode>(), 64);
     }
 
@@ -164,11 +180,11 @@ mod tests {
             for dir in [Vec3::X, -Vec3::X, Vec3::new(1.0, -0.0, 0.0)] {
                 let ray = RayBoxes::new(origin, dir, 0.0);
                 let (mask, enter) = node.hit(&ray, f32::INFINITY);
-                assert_eq!(mask & 8, 0, "the empty slot is never entered");
+                assert_eq!(mask & !7, 0, "empty slots are never entered");
                 for (i, b) in boxes.iter().enumerate() {
                     let expected =
                         b.hit_distance(origin.into(), (Vec3::ONE / dir).into(), 0.0, f32::INFINITY);
-                    let found = (mask >> i & 1 != 0).then(|| enter.to_array()[i]);
+                    let found = (mask >> i & 1 != 0).then(|| enter[i]);
                     assert_eq!(found, expected, "box {i} from {origin} along {dir}");
                 }
             }

@@ -20,17 +20,17 @@
 //! and prefetching all of a leaf's packs rather than the first one's
 //! three lines another 5-7 % (medians of 15 interleaved runs).
 
-use glam::{Vec3, Vec4};
+use glam::Vec3;
 
 use super::node::{RayBoxes, WideNode};
-use super::{WideBvh, WideLink, WIDTH};
+use super::{WideBvh, WideLink, ARITY};
 use crate::bvh::traverse::Stack;
 use crate::bvh::MAX_DEPTH;
 use crate::intersect::Ray;
 use crate::math::prefetch::prefetch_lines;
 
 /// Capacity of the traversal stack.
-const STACK: usize = (WIDTH - 1) * MAX_DEPTH + 1;
+const STACK: usize = (ARITY - 1) * MAX_DEPTH + 1;
 
 impl WideBvh {
     /// Closest-hit traversal. `leaf(link, t_max)` tests the leaf's
@@ -130,7 +130,7 @@ impl WideBvh {
                 prefetch_lines(pack, (5 * packs).div_ceil(2));
             } else {
                 let node = self.nodes.as_ptr().wrapping_add(child.first as usize);
-                prefetch_lines(node, 2);
+                prefetch_lines(node, 4);
             }
         }
     }
@@ -142,7 +142,7 @@ impl WideBvh {
 fn nearest_child(
     node: &WideNode,
     mask: u32,
-    enter: Vec4,
+    enter: [f32; ARITY],
     stack: &mut Stack<(WideLink, f32), STACK>,
 ) -> WideLink {
     let first = mask.trailing_zeros() as usize;
@@ -150,7 +150,6 @@ fn nearest_child(
     if rest == 0 {
         return node.children[first];
     }
-    let enter = enter.to_array();
     let second = rest.trailing_zeros() as usize;
     if rest & (rest - 1) == 0 {
         // Two children: the common case.
@@ -163,7 +162,7 @@ fn nearest_child(
         return node.children[near];
     }
     // Three or four: insertion sort by decreasing entry distance.
-    let mut sorted = [(0.0f32, WideLink::EMPTY); WIDTH];
+    let mut sorted = [(0.0f32, WideLink::EMPTY); ARITY];
     let mut n = 0;
     let mut bits = mask;
     while bits != 0 {

@@ -161,7 +161,7 @@ mod tests {
         let good = WideBvhAccel::new(primitives(300));
         let shapes = &good.primitives.shapes;
         let mut shrunk = good.wide.clone();
-        shrunk.nodes[0].planes[3].x -= 1.0;
+        shrunk.nodes[0].planes[3][0].x -= 1.0;
         let mut duplicated = good.wide.clone();
         duplicated.packs[1].ids[0] = duplicated.packs[0].ids[0];
         let mut moved = good.wide.clone();
