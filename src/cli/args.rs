@@ -217,7 +217,7 @@ pub struct BvhArgs {
     #[arg(long)]
     pub scaling: bool,
 
-    /// The BVH `--bench` traces: the four-wide SIMD one the renderers use,
+    /// The BVH `--bench` traces: the eight-wide SIMD one the renderers use,
     /// or part 2's binary one.
     #[arg(long, value_enum, default_value_t)]
     pub accel: AccelArg,

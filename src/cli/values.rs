@@ -29,7 +29,7 @@ pub fn positive(s: &str) -> Result<f32, String> {
 pub enum AccelArg {
     /// Part 2's binary BVH (`bvh::BvhAccel`), the teaching version.
     Binary,
-    /// The four-wide SIMD BVH (`bvh::WideBvhAccel`) the renderers use.
+    /// The eight-wide SIMD BVH (`bvh::WideBvhAccel`) the renderers use.
     #[default]
     Wide,
 }
