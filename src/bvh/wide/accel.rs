@@ -8,8 +8,11 @@
 //! [`BvhAccel`](crate::bvh::BvhAccel) and of the linear scan. The hit
 //! record is finished by [`Primitives::finish_hit`], as they do.
 
+#[cfg(target_arch = "x86_64")]
+use super::avx::Avx;
 use super::collapse::collapse;
 use super::leaf::{RayShear, TrianglePack};
+use super::node::{NodeTest, Sse};
 use super::{WideBvh, WideLink};
 use crate::bvh::accel::primitive_bounds;
 use crate::bvh::build::{build, BuildOptions};
@@ -117,11 +120,21 @@ struct LaneHit {
     hit: ShapeHit,
 }
 
-impl Intersector for WideBvhAccel {
-    fn intersect(&self, ray: &Ray) -> Option<Hit> {
+impl WideBvhAccel {
+    /// Whether this processor has AVX (the eight lanes of a node in one
+    /// register, [`super::avx`]); asked once, the answer is cached by std.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    fn avx() -> bool {
+        std::arch::is_x86_feature_detected!("avx")
+    }
+
+    /// The closest hit, the nodes tested by `T`.
+    #[inline(always)]
+    fn closest<T: NodeTest>(&self, ray: &Ray) -> Option<Hit> {
         let shear = RayShear::new(ray);
         let mut best = None;
-        self.wide.closest_hit(ray, |link, t_max| {
+        self.wide.closest_hit::<T>(ray, |link, t_max| {
             let found = self.leaf_hit(link, ray, &shear, t_max)?;
             if let Some((id, _)) = self.wide.packs[found.index].lane(found.lane) {
                 self.primitives.prefetch_shading(id);
@@ -142,10 +155,53 @@ impl Intersector for WideBvhAccel {
         Some(self.primitives.finish_hit(id, &shape, ray, hit))
     }
 
-    fn occluded(&self, ray: &Ray) -> bool {
+    /// Whether anything blocks the ray, the nodes tested by `T`.
+    #[inline(always)]
+    fn any<T: NodeTest>(&self, ray: &Ray) -> bool {
         let shear = RayShear::new(ray);
-        self.wide.any_hit(ray, |link| {
+        self.wide.any_hit::<T>(ray, |link| {
             self.leaf_hit(link, ray, &shear, ray.t_max).is_some()
         })
+    }
+
+    /// [`WideBvhAccel::closest`] compiled for AVX, so that the whole
+    /// traversal, the node test included, inlines into one function.
+    ///
+    /// # Safety
+    /// The processor must support AVX.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx")]
+    unsafe fn closest_avx(&self, ray: &Ray) -> Option<Hit> {
+        self.closest::<Avx>(ray)
+    }
+
+    /// [`WideBvhAccel::any`] compiled for AVX.
+    ///
+    /// # Safety
+    /// The processor must support AVX.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx")]
+    unsafe fn any_avx(&self, ray: &Ray) -> bool {
+        self.any::<Avx>(ray)
+    }
+}
+
+impl Intersector for WideBvhAccel {
+    fn intersect(&self, ray: &Ray) -> Option<Hit> {
+        #[cfg(target_arch = "x86_64")]
+        if Self::avx() {
+            // SAFETY: AVX was detected.
+            return unsafe { self.closest_avx(ray) };
+        }
+        self.closest::<Sse>(ray)
+    }
+
+    fn occluded(&self, ray: &Ray) -> bool {
+        #[cfg(target_arch = "x86_64")]
+        if Self::avx() {
+            // SAFETY: AVX was detected.
+            return unsafe { self.any_avx(ray) };
+        }
+        self.any::<Sse>(ray)
     }
 }

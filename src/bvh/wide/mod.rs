@@ -35,6 +35,8 @@
 //! Measured against the binary BVH and Embree in `docs/03-bvh.md`.
 
 pub mod accel;
+#[cfg(target_arch = "x86_64")]
+pub mod avx;
 pub mod collapse;
 pub mod leaf;
 pub mod node;

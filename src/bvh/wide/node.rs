@@ -5,7 +5,9 @@
 //! `planes[3 + a]` their maxima; then the eight links. 6 x 32 + 8 x 8 =
 //! 256 bytes, four cache lines. The two groups are tested one after the
 //! other with the same 4-lane code; they do not depend on each other, so
-//! the processor overlaps their arithmetic.
+//! the processor overlaps their arithmetic. Where the processor has AVX,
+//! [`super::avx`] tests all eight in one register instead, with the same
+//! result ([`NodeTest`] chooses).
 //!
 //! The slab test (Kay and Kajiya 1986, as in [`crate::intersect::Aabb`]),
 //! with the near and far planes chosen once per ray by the sign of the
@@ -60,11 +62,11 @@ pub const GROUPS: usize = ARITY / 4;
 /// across the lanes, and which plane of each axis is entered first.
 #[derive(Clone, Copy, Debug)]
 pub struct RayBoxes {
-    origin: [Vec4; 3],
-    inv_dir: [Vec4; 3],
-    near: [usize; 3],
-    far: [usize; 3],
-    has_zero_direction: bool,
+    pub(super) origin: [Vec4; 3],
+    pub(super) inv_dir: [Vec4; 3],
+    pub(super) near: [usize; 3],
+    pub(super) far: [usize; 3],
+    pub(super) has_zero_direction: bool,
     pub t_min: f32,
 }
 
@@ -144,6 +146,23 @@ impl WideNode {
             entries[4 * g..4 * g + 4].copy_from_slice(&enter.to_array());
         }
         (mask, entries)
+    }
+}
+
+/// How a traversal tests a ray against a node's eight boxes: the same
+/// slab test, compiled for the instructions the processor has (see
+/// [`super::avx`]). Every implementation returns the same bits.
+pub trait NodeTest {
+    fn hit(node: &WideNode, ray: &RayBoxes, t_max: f32) -> (u32, [f32; ARITY]);
+}
+
+/// The two groups of four lanes with SSE2 (NEON on ARM): every processor.
+pub struct Sse;
+
+impl NodeTest for Sse {
+    #[inline(always)]
+    fn hit(node: &WideNode, ray: &RayBoxes, t_max: f32) -> (u32, [f32; ARITY]) {
+        node.hit(ray, t_max)
     }
 }
 

@@ -22,7 +22,7 @@
 
 use glam::Vec3;
 
-use super::node::{RayBoxes, WideNode};
+use super::node::{NodeTest, RayBoxes, WideNode};
 use super::{WideBvh, WideLink, ARITY};
 use crate::bvh::traverse::Stack;
 use crate::bvh::MAX_DEPTH;
@@ -37,7 +37,7 @@ impl WideBvh {
     /// primitives and returns the nearest `t` found within
     /// `[ray.t_min, t_max]`, if any. Returns the closest `t` found.
     #[inline]
-    pub fn closest_hit(
+    pub fn closest_hit<T: NodeTest>(
         &self,
         ray: &Ray,
         mut leaf: impl FnMut(WideLink, f32) -> Option<f32>,
@@ -61,7 +61,7 @@ impl WideBvh {
                 }
             } else {
                 let node = &self.nodes[link.first as usize];
-                let (mask, enter) = node.hit(&boxes, t_max);
+                let (mask, enter) = T::hit(node, &boxes, t_max);
                 if mask != 0 {
                     self.prefetch_children(node, mask);
                     link = nearest_child(node, mask, enter, &mut stack);
@@ -79,7 +79,7 @@ impl WideBvh {
     /// Any-hit traversal: whether `leaf(link)` is true for some leaf whose
     /// box the ray meets within `[ray.t_min, ray.t_max]`.
     #[inline]
-    pub fn any_hit(&self, ray: &Ray, mut leaf: impl FnMut(WideLink) -> bool) -> bool {
+    pub fn any_hit<T: NodeTest>(&self, ray: &Ray, mut leaf: impl FnMut(WideLink) -> bool) -> bool {
         let Some(root) = self.root else {
             return false;
         };
@@ -103,7 +103,7 @@ impl WideBvh {
                 continue;
             }
             let node = &self.nodes[link.first as usize];
-            let (mut mask, _) = node.hit(&boxes, ray.t_max);
+            let (mut mask, _) = T::hit(node, &boxes, ray.t_max);
             while mask != 0 {
                 stack.push(node.children[mask.trailing_zeros() as usize]);
                 mask &= mask - 1;
