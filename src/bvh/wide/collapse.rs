@@ -2,7 +2,7 @@
 //! section 3; Dammertz et al. 2008 collapse the same way).
 //!
 //! A wide node starts from a binary node's two children. While it has
-//! fewer than four, the interior child with the largest surface area is
+//! fewer than eight, the interior child with the largest surface area is
 //! replaced by its own two children: by the surface area heuristic the
 //! largest box is the one a ray most likely enters, so opening it saves
 //! the most node visits. Leaves stay leaves; each becomes ceil(n / 4)

@@ -15,7 +15,8 @@
 //!
 //! - [`node`]: the 256-byte [`WideNode`] (four cache lines: the boxes of its
 //!   eight children stored plane by plane, two `Vec4` per plane, and eight
-//!   links) and the ray-versus-four-boxes slab test.
+//!   links) and the ray-versus-eight-boxes slab test (`avx`: the same
+//!   test in one 8-lane register where the processor has AVX; x86-64 only).
 //! - [`collapse`]: the wide tree from the binary SAH tree, pulling up
 //!   grandchildren by largest surface area until a node has eight children.
 //! - [`leaf`]: triangles packed four to a [`TrianglePack`] (structure of

@@ -1,14 +1,15 @@
 //! Wide BVH traversal: closest hit and any hit, one ray at a time.
 //!
-//! Closest hit is the binary traversal's front-to-back order with four
-//! children: the four boxes are tested at once ([`WideNode::hit`]); of the
+//! Closest hit is the binary traversal's front-to-back order with eight
+//! children: the eight boxes are tested at once ([`NodeTest`]: two 4-lane
+//! groups, or one AVX register); of the
 //! children hit, the nearest (by entry distance) is visited next and the
 //! others are pushed farthest first, each with its entry distance, so they
 //! pop nearest first. A popped subtree whose entry distance is beyond the
 //! closest hit found so far is skipped, and box tests are clipped to it.
 //!
-//! A node pushes at most three entries and the tree is at most
-//! [`MAX_DEPTH`] deep, so `3 MAX_DEPTH + 1` entries always suffice.
+//! A node pushes at most seven entries and the tree is at most
+//! [`MAX_DEPTH`] deep, so `7 MAX_DEPTH + 1` entries always suffice.
 //!
 //! Any hit (shadow rays) needs no order: it returns at the first leaf
 //! that reports a hit.
@@ -161,7 +162,7 @@ fn nearest_child(
         stack.push((node.children[far], enter[far]));
         return node.children[near];
     }
-    // Three or four: insertion sort by decreasing entry distance.
+    // Three to eight: insertion sort by decreasing entry distance.
     let mut sorted = [(0.0f32, WideLink::EMPTY); ARITY];
     let mut n = 0;
     let mut bits = mask;
