@@ -9,7 +9,7 @@
 
 use super::build::{build_from, BuildOptions};
 use super::Bvh;
-use crate::intersect::{Aabb, Hit, Intersector, Primitives, Ray, Shape};
+use crate::intersect::{Aabb, Intersector, PrimitiveHit, Primitives, Ray, Shape};
 
 /// A BVH over a scene's primitives.
 pub struct BvhAccel {
@@ -47,7 +47,11 @@ pub fn primitive_bounds(primitives: &Primitives) -> Vec<Aabb> {
 }
 
 impl Intersector for BvhAccel {
-    fn intersect(&self, ray: &Ray) -> Option<Hit> {
+    fn primitives(&self) -> &Primitives {
+        &self.primitives
+    }
+
+    fn nearest(&self, ray: &Ray) -> Option<PrimitiveHit> {
         let mut best = None;
         let test = self.primitives.triangle_test;
         self.bvh.closest_hit(ray, |slot, t_max| {
@@ -56,7 +60,7 @@ impl Intersector for BvhAccel {
             best = Some((id, shape, hit));
             Some(hit.t)
         });
-        best.map(|(id, shape, hit)| self.primitives.finish_hit(id, shape, ray, hit))
+        best.map(|(id, &shape, hit)| PrimitiveHit { id, shape, hit })
     }
 
     fn occluded(&self, ray: &Ray) -> bool {

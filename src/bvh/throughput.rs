@@ -15,6 +15,13 @@
 //! Rate = rays / wall-clock seconds of tracing only (the ray sets are
 //! made beforehand). `hit` and `tsum` are checksums that must agree
 //! between thread counts.
+//!
+//! Two queries ([`Query`]): the search for the closest primitive alone
+//! ([`Intersector::nearest`]: which primitive, `t` and barycentrics, what
+//! Embree's `rtcIntersect1` computes), and the full hit record the
+//! renderer asks for ([`Intersector::intersect`]: the search, then the
+//! point, its error bound and both normals, which reads the shading
+//! record, a second array).
 
 use std::time::Instant;
 
@@ -39,10 +46,20 @@ pub struct RaySet {
     pub rays: Vec<Ray>,
 }
 
+/// What is asked of each ray.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Query {
+    /// [`Intersector::nearest`]: the closest primitive, `t`, `u`, `v`.
+    Nearest,
+    /// [`Intersector::intersect`]: the same and the full hit record.
+    Record,
+}
+
 /// The result of tracing one set with one thread count.
 #[derive(Clone, Debug)]
 pub struct Measurement {
     pub set: &'static str,
+    pub query: Query,
     pub threads: usize,
     pub mrays_per_second: f64,
     pub hit_fraction: f64,
@@ -51,9 +68,13 @@ pub struct Measurement {
 
 impl std::fmt::Display for Measurement {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let query = match self.query {
+            Query::Nearest => "",
+            Query::Record => " with records",
+        };
         write!(
             f,
-            "{} {}T {:.2} Mrays/s hit {:.4} tsum {:.6e}",
+            "{}{query} {}T {:.2} Mrays/s hit {:.4} tsum {:.6e}",
             self.set, self.threads, self.mrays_per_second, self.hit_fraction, self.t_sum
         )
     }
@@ -137,9 +158,14 @@ pub fn diffuse_rays(accel: &impl Intersector, primary: &[Ray]) -> Vec<Ray> {
 /// disturbance by another process does not count.
 pub const RUNS: usize = 3;
 
-/// Traces `set` for the closest hit on a pool of `threads` threads,
-/// [`RUNS`] times; reports the fastest run.
-pub fn measure(accel: &impl Intersector, set: &RaySet, threads: usize) -> Measurement {
+/// Traces `set` for `query` on a pool of `threads` threads, [`RUNS`]
+/// times; reports the fastest run.
+pub fn measure(
+    accel: &impl Intersector,
+    set: &RaySet,
+    query: Query,
+    threads: usize,
+) -> Measurement {
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()
@@ -148,12 +174,13 @@ pub fn measure(accel: &impl Intersector, set: &RaySet, threads: usize) -> Measur
     let mut result = (0, 0.0);
     for _ in 0..RUNS {
         let start = Instant::now();
-        result = pool.install(|| trace_all(accel, &set.rays));
+        result = pool.install(|| trace_all(accel, &set.rays, query));
         best = best.min(start.elapsed().as_secs_f64());
     }
     let (hits, t_sum) = result;
     Measurement {
         set: set.name,
+        query,
         threads,
         mrays_per_second: set.rays.len() as f64 / best / 1e6,
         hit_fraction: hits as f64 / set.rays.len() as f64,
@@ -162,15 +189,19 @@ pub fn measure(accel: &impl Intersector, set: &RaySet, threads: usize) -> Measur
 }
 
 /// Number of hits and the sum of their distances.
-fn trace_all(accel: &impl Intersector, rays: &[Ray]) -> (usize, f64) {
+fn trace_all(accel: &impl Intersector, rays: &[Ray], query: Query) -> (usize, f64) {
+    let t = |ray: &Ray| match query {
+        Query::Nearest => accel.nearest(ray).map(|found| found.hit.t),
+        Query::Record => accel.intersect(ray).map(|hit| hit.t),
+    };
     rays.par_chunks(4096)
         .map(|chunk| {
-            chunk.iter().fold((0usize, 0.0f64), |(n, sum), ray| {
-                match accel.intersect(ray) {
-                    Some(hit) => (n + 1, sum + hit.t as f64),
+            chunk
+                .iter()
+                .fold((0usize, 0.0f64), |(n, sum), ray| match t(ray) {
+                    Some(t) => (n + 1, sum + t as f64),
                     None => (n, sum),
-                }
-            })
+                })
         })
         .reduce(|| (0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1))
 }

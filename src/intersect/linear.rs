@@ -1,7 +1,7 @@
 //! Part 1's intersector: test the ray against every primitive, keep the closest.
 //! Cost O(N) per ray; the reference every acceleration structure is checked against.
 
-use super::{Hit, Intersector, Primitives, Ray};
+use super::{Intersector, PrimitiveHit, Primitives, Ray};
 
 /// Closest hit by testing every primitive.
 pub struct LinearScan<'a> {
@@ -15,7 +15,11 @@ impl<'a> LinearScan<'a> {
 }
 
 impl Intersector for LinearScan<'_> {
-    fn intersect(&self, ray: &Ray) -> Option<Hit> {
+    fn primitives(&self) -> &Primitives {
+        self.primitives
+    }
+
+    fn nearest(&self, ray: &Ray) -> Option<PrimitiveHit> {
         let mut t_max = ray.t_max;
         let mut best = None;
         for (id, shape) in self.primitives.shapes.iter().enumerate() {
@@ -24,9 +28,10 @@ impl Intersector for LinearScan<'_> {
                 best = Some((id as u32, hit));
             }
         }
-        best.map(|(id, hit)| {
-            let shape = &self.primitives.shapes[id as usize];
-            self.primitives.finish_hit(id, shape, ray, hit)
+        best.map(|(id, hit)| PrimitiveHit {
+            id,
+            shape: self.primitives.shapes[id as usize],
+            hit,
         })
     }
 

@@ -17,7 +17,7 @@ use super::{WideBvh, WideLink};
 use crate::bvh::accel::primitive_bounds;
 use crate::bvh::build::{build, BuildOptions};
 use crate::bvh::{Bvh, ValidationError};
-use crate::intersect::{Hit, Intersector, Primitives, Ray, Shape, ShapeHit, TriangleTest};
+use crate::intersect::{Intersector, PrimitiveHit, Primitives, Ray, Shape, ShapeHit, TriangleTest};
 
 /// An eight-wide BVH over a scene's primitives.
 pub struct WideBvhAccel {
@@ -129,9 +129,9 @@ impl WideBvhAccel {
         std::arch::is_x86_feature_detected!("avx")
     }
 
-    /// The closest hit, the nodes tested by `T`.
+    /// The closest primitive, the nodes tested by `T`.
     #[inline(always)]
-    fn closest<T: NodeTest>(&self, ray: &Ray) -> Option<Hit> {
+    fn closest<T: NodeTest>(&self, ray: &Ray) -> Option<PrimitiveHit> {
         let shear = RayShear::new(ray);
         let mut best = None;
         self.wide.closest_hit::<T>(ray, |link, t_max| {
@@ -152,7 +152,7 @@ impl WideBvhAccel {
         } else {
             Shape::Triangle(pack.triangle(lane))
         };
-        Some(self.primitives.finish_hit(id, &shape, ray, hit))
+        Some(PrimitiveHit { id, shape, hit })
     }
 
     /// Whether anything blocks the ray, the nodes tested by `T`.
@@ -171,7 +171,7 @@ impl WideBvhAccel {
     /// The processor must support AVX.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx")]
-    unsafe fn closest_avx(&self, ray: &Ray) -> Option<Hit> {
+    unsafe fn closest_avx(&self, ray: &Ray) -> Option<PrimitiveHit> {
         self.closest::<Avx>(ray)
     }
 
@@ -187,7 +187,11 @@ impl WideBvhAccel {
 }
 
 impl Intersector for WideBvhAccel {
-    fn intersect(&self, ray: &Ray) -> Option<Hit> {
+    fn primitives(&self) -> &Primitives {
+        &self.primitives
+    }
+
+    fn nearest(&self, ray: &Ray) -> Option<PrimitiveHit> {
         #[cfg(target_arch = "x86_64")]
         if Self::avx() {
             // SAFETY: AVX was detected.

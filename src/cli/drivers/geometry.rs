@@ -159,28 +159,34 @@ pub fn bvh_benchmark(threads: Option<usize>, accel: AccelArg) -> Result<()> {
     Ok(())
 }
 
-/// The benchmark's ray sets through `accel`, one thread, then `threads`.
+/// The benchmark's ray sets through `accel`, one thread, then `threads`,
+/// for the closest primitive; then, on one thread, for full hit records.
 fn trace_benchmark_sets(accel: &impl Intersector, threads: Option<usize>) {
-    use crate::bvh::throughput::{measure, ray_sets};
+    use crate::bvh::throughput::{measure, ray_sets, Query};
     let all = threads.unwrap_or_else(rayon::current_num_threads);
     let counts = if all > 1 { vec![1, all] } else { vec![1] };
     for set in &ray_sets(accel, 1024, 1 << 20) {
         for &t in &counts {
-            println!("{}", measure(accel, set, t));
+            println!("{}", measure(accel, set, Query::Nearest, t));
         }
+        println!("{}", measure(accel, set, Query::Record, 1));
     }
 }
 
 /// `part2-bvh --scaling`: build time and one-thread ray rates of the
 /// benchmark's sphere at growing triangle counts, as a Markdown table.
 pub fn bvh_scaling() -> Result<()> {
-    use crate::bvh::throughput::{build_benchmark_bvh, measure, primary_rays, random_rays, RaySet};
+    use crate::bvh::throughput::{
+        build_benchmark_bvh, measure, primary_rays, random_rays, Query, RaySet,
+    };
     println!("| triangles | build (s) | primary 1T (Mrays/s) | random 1T (Mrays/s) |");
     println!("| ---: | ---: | ---: | ---: |");
     for k in 0..6 {
         let (phi, theta) = (32 << k, 16 << k);
         let (accel, build) = build_benchmark_bvh(phi, theta);
-        let rate = |name, rays| measure(&accel, &RaySet { name, rays }, 1).mrays_per_second;
+        let rate = |name, rays| {
+            measure(&accel, &RaySet { name, rays }, Query::Nearest, 1).mrays_per_second
+        };
         let primary = rate("primary", primary_rays(512));
         let random = rate("random", random_rays(1 << 18));
         println!(
