@@ -42,6 +42,12 @@ pub struct BuildOptions {
     /// Leaves never hold more primitives than this (unless they all share
     /// one centroid and the depth limit is reached).
     pub max_leaf_size: usize,
+    /// A node of at most this many primitives becomes a leaf without a
+    /// split search (0, the default: the SAH decides every node). The
+    /// wide BVH sets it to the size of the subtrees its collapse merges
+    /// into one leaf anyway ([`crate::bvh::wide::collapse::MERGE`]), so
+    /// the levels it would undo are never built.
+    pub leaf_at_most: usize,
 }
 
 impl Default for BuildOptions {
@@ -49,6 +55,7 @@ impl Default for BuildOptions {
         BuildOptions {
             traversal_cost: 2.0,
             max_leaf_size: 8,
+            leaf_at_most: 0,
         }
     }
 }
@@ -236,7 +243,10 @@ fn decide(
     // A split costs more than `C_trav` (the children's term is positive),
     // a leaf `count`: so a node of at most `C_trav` primitives is a leaf
     // without binning, the decision the SAH would take.
-    if count <= 1 || (leaf_allowed && count as f32 <= options.traversal_cost) {
+    if count <= 1
+        || count <= options.leaf_at_most
+        || (leaf_allowed && count as f32 <= options.traversal_cost)
+    {
         return Decision::Leaf;
     }
     let split = if can_use_sah {

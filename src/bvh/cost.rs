@@ -72,6 +72,7 @@ mod tests {
         let options = BuildOptions {
             traversal_cost: 2.0,
             max_leaf_size: 1,
+            leaf_at_most: 0,
         };
         let bvh = build(&[unit_box_at(0.0), unit_box_at(9.0)], &options);
         // SA(unit cube) = 6, SA(10 x 1 x 1) = 42.

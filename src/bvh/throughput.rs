@@ -30,7 +30,7 @@ use rand::Rng;
 use rayon::prelude::*;
 
 use super::{BvhAccel, WideBvhAccel};
-use crate::intersect::{Intersector, Primitives, Ray};
+use crate::intersect::{Intersector, Primitives, Ray, Shape};
 use crate::math::rng::{next_2d, sampler};
 use crate::math::warp::{sample_uniform_hemisphere, sample_uniform_sphere};
 use crate::math::Frame;
@@ -93,9 +93,9 @@ pub fn build_benchmark_bvh(phi_steps: u32, theta_steps: u32) -> (BvhAccel, f64) 
 pub fn build_benchmark_wide(phi_steps: u32, theta_steps: u32) -> (WideBvhAccel, [f64; 2]) {
     let primitives = Primitives::from_scene(&bumpy_sphere(phi_steps, theta_steps));
     let start = Instant::now();
-    let bvh = super::build::build(
-        &super::accel::primitive_bounds(&primitives),
-        &super::BuildOptions::default(),
+    let bvh = super::build::build_from(
+        primitives.shapes.iter().map(Shape::bounds),
+        &super::wide::accel::binary_options(&primitives),
     );
     let binary = start.elapsed().as_secs_f64();
     let accel = WideBvhAccel::from_binary(&bvh, primitives);

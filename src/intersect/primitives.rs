@@ -149,6 +149,11 @@ impl Primitives {
         self.shapes.is_empty()
     }
 
+    /// Whether any primitive is a sphere.
+    pub fn has_spheres(&self) -> bool {
+        !self.spheres.is_empty()
+    }
+
     /// Bounding box of every primitive.
     pub fn bounds(&self) -> Aabb {
         self.shapes

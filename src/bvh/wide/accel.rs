@@ -10,12 +10,11 @@
 
 #[cfg(target_arch = "x86_64")]
 use super::avx::Avx;
-use super::collapse::collapse;
+use super::collapse::{collapse, MERGE};
 use super::leaf::{RayShear, TrianglePack};
 use super::node::{NodeTest, Sse};
 use super::{WideBvh, WideLink};
-use crate::bvh::accel::primitive_bounds;
-use crate::bvh::build::{build, BuildOptions};
+use crate::bvh::build::{build_from, BuildOptions};
 use crate::bvh::{Bvh, ValidationError};
 use crate::intersect::{Intersector, PrimitiveHit, Primitives, Ray, Shape, ShapeHit, TriangleTest};
 
@@ -25,14 +24,33 @@ pub struct WideBvhAccel {
     pub primitives: Primitives,
 }
 
+/// The binary build's options for a wide BVH over `primitives`: the
+/// defaults, except that with no spheres a node of at most
+/// [`MERGE`] primitives becomes a leaf at once. The collapse would merge
+/// its subtree into one leaf of the same packs, so building it would be
+/// undone; skipping those levels takes the bench's build from 0.33 to
+/// 0.23 s. Spheres keep the default: the collapse leaves them in their
+/// own binary leaves, with tight boxes, and merges only around them.
+pub fn binary_options(primitives: &Primitives) -> BuildOptions {
+    if primitives.has_spheres() {
+        return BuildOptions::default();
+    }
+    BuildOptions {
+        max_leaf_size: MERGE,
+        leaf_at_most: MERGE,
+        ..BuildOptions::default()
+    }
+}
+
 impl WideBvhAccel {
-    /// Builds the binary BVH with the default SAH options and collapses it.
+    /// Builds the binary BVH with [`binary_options`] and collapses it.
     pub fn new(primitives: Primitives) -> Self {
-        Self::with_options(primitives, &BuildOptions::default())
+        let options = binary_options(&primitives);
+        Self::with_options(primitives, &options)
     }
 
     pub fn with_options(primitives: Primitives, options: &BuildOptions) -> Self {
-        let bvh = build(&primitive_bounds(&primitives), options);
+        let bvh = build_from(primitives.shapes.iter().map(Shape::bounds), options);
         Self::from_binary(&bvh, primitives)
     }
 

@@ -6,8 +6,10 @@
 //! replaced by its own two children: by the surface area heuristic the
 //! largest box is the one a ray most likely enters, so opening it saves
 //! the most node visits. Leaves stay leaves; each becomes ceil(n / 4)
-//! triangle packs. The binary build's leaves hold at most 8 primitives,
-//! so a leaf has at most two packs.
+//! triangle packs. A binary subtree of at most [`MERGE`] primitives
+//! becomes one leaf too (the wide build makes such nodes leaves from the
+//! start: [`super::accel::binary_options`]), so a leaf has at most three
+//! packs.
 //!
 //! Nodes are written depth first, a node before its children, like the
 //! binary tree. Collapsing never adds levels, so the depth limit of the
@@ -61,6 +63,11 @@ pub fn collapse(bvh: &Bvh, shapes: &[Shape]) -> WideBvh {
 /// Whether a sphere lies under each binary node.
 fn subtree_spheres(bvh: &Bvh, shapes: &[Shape]) -> Vec<bool> {
     let mut spheres = vec![false; bvh.nodes.len()];
+    // One pass in memory order settles the common case, a mesh alone,
+    // without reading the shapes at the leaves' scattered ids.
+    if !shapes.iter().any(|s| matches!(s, Shape::Sphere(_))) {
+        return spheres;
+    }
     for index in (0..bvh.nodes.len()).rev() {
         spheres[index] = bvh.nodes[index].children.iter().any(|c| {
             if c.is_leaf() {
@@ -146,19 +153,31 @@ impl Collapser<'_> {
         let mut children = [(Aabb::EMPTY, Link::default()); ARITY];
         children[0] = (binary.child_bounds(0), binary.children[0]);
         children[1] = (binary.child_bounds(1), binary.children[1]);
+        // Each child's surface area if it can be opened, else -1.
+        let openable = |(bounds, link): (Aabb, Link)| {
+            if self.becomes_leaf(link) {
+                -1.0
+            } else {
+                bounds.surface_area()
+            }
+        };
+        let mut area = [-1.0f32; ARITY];
+        area[0] = openable(children[0]);
+        area[1] = openable(children[1]);
         let mut n = 2;
         while n < ARITY {
             // The interior child with the largest surface area, if any.
-            let open = (0..n)
-                .filter(|&i| !self.becomes_leaf(children[i].1))
-                .max_by(|&a, &b| {
-                    let area = |i: usize| children[i].0.surface_area();
-                    area(a).total_cmp(&area(b))
-                });
-            let Some(i) = open else { break };
+            let i = (0..n)
+                .max_by(|&a, &b| area[a].total_cmp(&area[b]))
+                .unwrap_or(0);
+            if area[i] < 0.0 {
+                break;
+            }
             let grand = &self.bvh.nodes[children[i].1.first as usize];
             children[i] = (grand.child_bounds(0), grand.children[0]);
             children[n] = (grand.child_bounds(1), grand.children[1]);
+            area[i] = openable(children[i]);
+            area[n] = openable(children[n]);
             n += 1;
         }
         let me = self.nodes.len();
