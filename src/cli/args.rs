@@ -11,7 +11,7 @@ use crate::depth_of_field::COURSE_FOCAL_DISTANCE;
 
 use super::values::{non_negative, positive};
 pub use super::values::{
-    AccelArg, Builtin, LightChoiceArg, MicrofacetSamplingArg, RouletteArg, SamplerArg,
+    AccelArg, Builtin, CastersArg, LightChoiceArg, MicrofacetSamplingArg, RouletteArg, SamplerArg,
 };
 
 /// Largest accepted image side, pixels.
@@ -197,8 +197,16 @@ pub struct CourseArgs {
     #[arg(long, value_enum, value_name = "RULE", default_value_t = RouletteArg::Throughput)]
     pub roulette: RouletteArg,
 
-    /// The course's sampling: `--sampler independent --roulette fixed`.
-    #[arg(long, conflicts_with_all = ["sampler", "roulette"])]
+    /// Caustic casters: at diffuse surfaces, draw a quarter of the path's
+    /// directions towards the scene's smooth spheres (mirror, glass,
+    /// conductors with alpha <= 0.3), weighted so the image's expectation
+    /// is unchanged (`auto`, the default), or none (`off`, the course's).
+    #[arg(long, value_enum, value_name = "RULE", default_value_t = CastersArg::Auto)]
+    pub casters: CastersArg,
+
+    /// The course's sampling: `--sampler independent --roulette fixed
+    /// --casters off`.
+    #[arg(long, conflicts_with_all = ["sampler", "roulette", "casters"])]
     pub course: bool,
 }
 

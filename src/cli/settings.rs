@@ -13,7 +13,7 @@ use crate::materials::{BsdfOptions, FresnelModel};
 use crate::render::RenderSettings;
 use crate::sampling::SamplerKind;
 use crate::scene::{Scene, SceneError};
-use crate::world::WorldOptions;
+use crate::world::{CasterRule, WorldOptions};
 
 impl CourseArgs {
     /// The defaults that apply: the course's ([`COURSE_DEFAULTS`]) when a
@@ -120,6 +120,11 @@ impl CourseArgs {
                 microfacet: self.microfacet_sampling.into(),
             },
             light_choice: self.light_choice.into(),
+            casters: if self.course {
+                CasterRule::Off
+            } else {
+                self.casters.into()
+            },
         }
     }
 

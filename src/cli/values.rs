@@ -7,6 +7,7 @@ use crate::lights::LightChoiceRule;
 use crate::materials::MicrofacetSampling;
 use crate::sampling::SamplerKind;
 use crate::scene::{builtin, Scene};
+use crate::world::CasterRule;
 
 /// A finite number `>= 0`.
 pub fn non_negative(s: &str) -> Result<f32, String> {
@@ -113,6 +114,25 @@ impl From<RouletteArg> for Roulette {
         match arg {
             RouletteArg::Fixed => Roulette::Fixed,
             RouletteArg::Throughput => Roulette::Throughput,
+        }
+    }
+}
+
+/// `--casters`: the command line's names of the [`CasterRule`]s.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum CastersArg {
+    /// Diffuse surfaces sample towards the scene's smooth spheres too (the default).
+    #[default]
+    Auto,
+    /// Diffuse surfaces sample their BSDF alone (the course's).
+    Off,
+}
+
+impl From<CastersArg> for CasterRule {
+    fn from(arg: CastersArg) -> Self {
+        match arg {
+            CastersArg::Auto => CasterRule::Auto,
+            CastersArg::Off => CasterRule::Off,
         }
     }
 }

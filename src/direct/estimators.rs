@@ -168,6 +168,9 @@ impl DirectLights {
             LightPdf::Delta => 1.0 / chosen,
             LightPdf::SolidAngle(pdf) if self.mis => {
                 let light_pdf = chosen * pdf;
+                // The density with which the path's continuation (the
+                // other strategy) would have drawn `wi`.
+                let bsdf_pdf = world.continuation_pdf(point, sample.wi, bsdf_pdf);
                 power_heuristic(strategy.samples as f32, light_pdf, 1.0, bsdf_pdf) / light_pdf
             }
             LightPdf::SolidAngle(pdf) => 1.0 / (chosen * pdf),

@@ -143,7 +143,7 @@ impl PathTracer {
             }
             let uc = sampler.get_1d();
             let u = sampler.get_2d();
-            let Some(sample) = point.bsdf.sample(point.wo, uc, u) else {
+            let Some(sample) = world.sample_continuation(&point, uc, u) else {
                 return l;
             };
             let weight = sample.weight();

@@ -6,6 +6,12 @@
 //!   (concentric map) lifted by `z = sqrt(1 - x^2 - y^2)`, pdf `cos(theta) / pi`
 //!   (Malley's method; pbrt-v4, section A.5.3).
 //!
+//! - Uniform cone (around +Z, half-angle `theta_max`): `1 - cos(theta) =
+//!   u1 (1 - cos(theta_max))`, `phi = 2 pi u2`, pdf `1 / (2 pi (1 - cos(theta_max)))`
+//!   (pbrt-v4, section A.5.4). The cone is given by `1 - cos(theta_max)`,
+//!   so a narrow cone keeps its precision (`1 - cos` of a small angle
+//!   cancels in `f32`).
+//!
 //! - Uniform triangle: barycentrics `(1 - s, s (1 - u2), s u2)` with
 //!   `s = sqrt(u1)` (pbrt-v4, section 6.5.4; the square root undoes the
 //!   triangle's width growing linearly away from the first corner), density
@@ -84,6 +90,24 @@ pub fn cosine_hemisphere_pdf(w: Vec3) -> f32 {
     } else {
         0.0
     }
+}
+
+/// A direction uniform in the cone around +Z of half-angle `theta_max`,
+/// given as `one_minus_cos_max = 1 - cos(theta_max)` in `(0, 2]`, from
+/// `u` in `[0, 1)^2`.
+pub fn sample_uniform_cone(u: Vec2, one_minus_cos_max: f32) -> Vec3 {
+    let one_minus_cos = u.x * one_minus_cos_max;
+    // sin^2 = 1 - cos^2 = (1 - cos)(1 + cos), without cancelling.
+    let sin = (one_minus_cos * (2.0 - one_minus_cos)).max(0.0).sqrt();
+    let phi = 2.0 * PI * u.y;
+    Vec3::new(sin * phi.cos(), sin * phi.sin(), 1.0 - one_minus_cos)
+}
+
+/// Density of [`sample_uniform_cone`] inside its cone:
+/// `1 / (2 pi (1 - cos(theta_max)))` per steradian (the caller tests
+/// whether a direction is inside).
+pub fn uniform_cone_pdf(one_minus_cos_max: f32) -> f32 {
+    1.0 / (2.0 * PI * one_minus_cos_max)
 }
 
 /// Barycentric coordinates of a point uniform on a triangle, from `u` in

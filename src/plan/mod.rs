@@ -7,6 +7,7 @@
 //! | light sampling | some light can be sampled and some surface scatters non-deltas | nothing: the integrator skips it at delta vertices anyway; the plan reports it |
 //! | multiple importance sampling | a light BSDF rays can find (area, emissive triangles, sky) and a non-delta BSDF | the BSDF density per light sample and the last ray of every path |
 //! | lens | `-b > 0` | the lens sample and its disk warp per camera ray |
+//! | caustic casters | a mirror, glass or smooth conductor sphere (and not `--casters off`) | nothing: it adds a sampling strategy where a scene has caustics, and costs nothing where it has none |
 //!
 //! Specialising changes no expectation: the plan only drops work whose
 //! result is zero or whose weight is 1 (MIS with no second strategy). The
@@ -21,6 +22,7 @@ use crate::materials::{Bsdf, BsdfOptions};
 use crate::math::{luminance, Rgb};
 use crate::sampling::SamplerKind;
 use crate::scene::{Material, Scene};
+use crate::world::casters::{Casters, CASTER_PROBABILITY, SMOOTH_ALPHA};
 
 /// The kinds of scattering a scene's used materials have.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -212,6 +214,23 @@ impl Plan {
             SamplerKind::ZSobol => {
                 "plan: sampler: zsobol (Owen-scrambled Sobol' points in Morton order over pixels)".into()
             }
+        });
+        self
+    }
+
+    /// The plan with a line saying which spheres diffuse surfaces sample
+    /// towards for caustics ([`crate::world::casters`]).
+    pub fn with_casters(mut self, casters: &Casters) -> Self {
+        let n = casters.spheres.len();
+        self.lines.push(if n == 0 {
+            "plan: caustic casters: none (no mirror, glass or smooth conductor sphere, or --casters off)".into()
+        } else if !self.bsdfs.diffuse {
+            format!("plan: caustic casters: {n} sphere(s), unused: no surface is diffuse")
+        } else {
+            format!(
+                "plan: caustic casters: {n} sphere(s) (mirror, glass, conductor with alpha <= {SMOOTH_ALPHA}): \
+                 diffuse surfaces draw {CASTER_PROBABILITY} of their continuations towards them"
+            )
         });
         self
     }

@@ -1,17 +1,22 @@
 //! The scene as the renderer sees it: an intersector over the scene's
 //! primitives, the materials, the light set, and hits prepared for
-//! shading ([`ShadingPoint`]). Every part from 3 on renders through a [`World`].
+//! shading ([`ShadingPoint`]), and how a path continues from a surface
+//! ([`World::sample_continuation`]: the BSDF, mixed at diffuse vertices
+//! with directions towards caustic casters, [`casters`]). Every part from
+//! 3 on renders through a [`World`].
 
+pub mod casters;
 pub mod shading_point;
 
+pub use casters::{CasterRule, Casters};
 pub use shading_point::ShadingPoint;
 
 use crate::environment::EnvironmentLight;
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 
 use crate::intersect::{Hit, Intersector, Ray};
 use crate::lights::{LightChoiceRule, LightConvention, LightSet};
-use crate::materials::BsdfOptions;
+use crate::materials::{Bsdf, BsdfOptions, BsdfSample, Density};
 use crate::scene::{Material, Scene};
 
 /// Choices about the scene's appearance that a render makes once.
@@ -23,6 +28,8 @@ pub struct WorldOptions {
     pub bsdf: BsdfOptions,
     /// Which lights direct lighting samples (`--light-choice`).
     pub light_choice: LightChoiceRule,
+    /// Whether diffuse vertices sample towards caustic casters (`--casters`).
+    pub casters: CasterRule,
 }
 
 /// A scene ready to be traced: intersector, materials and lights.
@@ -31,6 +38,8 @@ pub struct World<'a, I> {
     pub materials: &'a [Material],
     pub lights: LightSet,
     pub bsdf_options: BsdfOptions,
+    /// Smooth spheres that diffuse vertices sample towards.
+    pub casters: Casters,
 }
 
 impl<'a, I: Intersector> World<'a, I> {
@@ -46,6 +55,7 @@ impl<'a, I: Intersector> World<'a, I> {
             lights: LightSet::new(scene, options.light_convention)
                 .with_choice(options.light_choice),
             bsdf_options: options.bsdf,
+            casters: Casters::new(scene, options.casters),
         }
     }
 
@@ -75,5 +85,59 @@ impl<'a, I: Intersector> World<'a, I> {
     pub fn shade(&self, hit: Hit, wo: Vec3) -> ShadingPoint {
         let material = self.material(&hit);
         ShadingPoint::new(hit, wo, &material, self.bsdf_options)
+    }
+
+    /// The direction a path takes from `point`: `uc` in `[0, 1)` chooses
+    /// between the casters' cones and the BSDF (then the BSDF's lobe), `u`
+    /// the direction. The sample's density is the mixture's
+    /// ([`World::continuation_pdf`]), so its weight `f |cos| / p` is the
+    /// path's; without eligible casters it is the BSDF's sample.
+    pub fn sample_continuation(
+        &self,
+        point: &ShadingPoint,
+        uc: f32,
+        u: Vec2,
+    ) -> Option<BsdfSample> {
+        let cones = match point.bsdf {
+            Bsdf::Diffuse(_) if !self.casters.is_empty() => {
+                self.casters.cones(point.hit.p, point.frame.z)
+            }
+            _ => return point.bsdf.sample(point.wo, uc, u),
+        };
+        if cones.is_empty() {
+            return point.bsdf.sample(point.wo, uc, u);
+        }
+        let c = casters::CASTER_PROBABILITY;
+        let (mut sample, wi_world) = if uc < c {
+            let wi_world = cones.sample(uc / c, u);
+            let wi = point.frame.to_local(wi_world);
+            if wi.z <= 0.0 {
+                return None;
+            }
+            let f = point.bsdf.f(point.wo, wi);
+            (BsdfSample::reflection(f, wi, 1.0)?, wi_world)
+        } else {
+            let sample = point.bsdf.sample(point.wo, (uc - c) / (1.0 - c), u)?;
+            (sample, point.frame.to_world(sample.wi))
+        };
+        let bsdf_pdf = point.bsdf.pdf(point.wo, sample.wi);
+        let pdf = (1.0 - c) * bsdf_pdf + c * cones.pdf(wi_world);
+        sample.density = Density::SolidAngle(pdf);
+        Some(sample)
+    }
+
+    /// Density per steradian of [`World::sample_continuation`] at `point`
+    /// for the direction `wi` (local frame; `wi_world` the same in world
+    /// space), given the BSDF's own density `bsdf_pdf` there.
+    pub fn continuation_pdf(&self, point: &ShadingPoint, wi_world: Vec3, bsdf_pdf: f32) -> f32 {
+        if self.casters.is_empty() || !matches!(point.bsdf, Bsdf::Diffuse(_)) {
+            return bsdf_pdf;
+        }
+        let cones = self.casters.cones(point.hit.p, point.frame.z);
+        if cones.is_empty() {
+            return bsdf_pdf;
+        }
+        let c = casters::CASTER_PROBABILITY;
+        (1.0 - c) * bsdf_pdf + c * cones.pdf(wi_world)
     }
 }

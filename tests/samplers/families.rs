@@ -5,9 +5,11 @@
 use std::f64::consts::PI;
 
 use glam::{Vec2, Vec3};
+use pathtracer::bvh::BvhAccel;
 use pathtracer::environment::{
     uv_to_direction, EnvironmentLight, EnvironmentMap, EnvironmentSampling,
 };
+use pathtracer::intersect::Ray;
 use pathtracer::lights::{Light as SampledLight, LightConvention, LightPdf};
 use pathtracer::materials::{Conductor, Diffuse, MicrofacetSampling};
 use pathtracer::math::distribution::Distribution2D;
@@ -16,9 +18,10 @@ use pathtracer::math::warp::{
     sample_uniform_sphere, uniform_hemisphere_pdf, uniform_sphere_pdf,
 };
 use pathtracer::math::Frame;
-use pathtracer::scene::Light;
+use pathtracer::scene::{Light, Material, Scene};
+use pathtracer::world::World;
 
-use crate::common::{rect_corners, rect_light};
+use crate::common::{accel, diffuse, rect_corners, rect_light, SceneBuilder};
 
 /// A sampler of unit directions with its density per steradian.
 pub struct Family {
@@ -250,6 +253,67 @@ fn environment_families() -> Vec<Family> {
     ]
 }
 
+/// The path's continuation at a diffuse floor point under two caustic
+/// casters (a mirror sphere and a smooth conductor, wholly above the
+/// floor): the mixture of the cosine lobe and the spheres' cones
+/// (`World::sample_continuation`, `World::continuation_pdf`). The family
+/// takes a 2D number; the 1D number that chooses between cosine and cones
+/// comes from its own fixed stream, independent of it.
+fn continuation_family() -> Family {
+    let mut b = SceneBuilder::new();
+    let floor = b.material(diffuse(0.7));
+    let mirror = b.material(Material::Mirror {
+        reflectance: Vec3::ONE,
+    });
+    let smooth = b.material(Material::Microfacet {
+        alpha: 0.05,
+        eta: Vec3::splat(0.2),
+        k: Vec3::splat(3.0),
+    });
+    b.quad(
+        floor,
+        [
+            Vec3::new(-3.0, 0.0, -3.0),
+            Vec3::new(3.0, 0.0, -3.0),
+            Vec3::new(3.0, 0.0, 3.0),
+            Vec3::new(-3.0, 0.0, 3.0),
+        ],
+    )
+    .sphere(Vec3::new(0.5, 0.6, 0.2), 0.3, mirror)
+    .sphere(Vec3::new(-0.8, 1.5, -0.4), 0.5, smooth);
+    // The world borrows the scene and its BVH for the family's lifetime.
+    let scene: &'static Scene = Box::leak(Box::new(b.finish()));
+    let bvh: &'static BvhAccel = Box::leak(Box::new(accel(scene)));
+    let world: &'static World<&BvhAccel> = Box::leak(Box::new(World::new(scene, bvh)));
+    assert_eq!(world.casters.spheres.len(), 2);
+    let down = Ray::new(
+        Vec3::new(0.0, 0.1, 0.0),
+        Vec3::new(0.1, -1.0, 0.05).normalize(),
+    );
+    let point = world.trace(&down).expect("the ray meets the floor");
+    let state = std::cell::Cell::new(0x9e37_79b9_7f4a_7c15u64);
+    Family {
+        name: "diffuse continuation with two caster cones".into(),
+        sample: Box::new(move |u| {
+            // SplitMix64 (Steele, Lea and Flood 2014) for the choice.
+            let z = state.get().wrapping_add(0x9e37_79b9_7f4a_7c15);
+            state.set(z);
+            let z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+            let z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+            let uc = ((z ^ (z >> 31)) >> 40) as f32 / (1u64 << 24) as f32;
+            let s = world.sample_continuation(&point, uc, u)?;
+            Some((point.frame.to_world(s.wi), s.pdf() as f64))
+        }),
+        pdf: Box::new(move |w| {
+            let bsdf_pdf = point.bsdf.pdf(point.wo, point.frame.to_local(w));
+            world.continuation_pdf(&point, w, bsdf_pdf) as f64
+        }),
+        frame: point.frame,
+        cos_min: 0.0,
+        lossy: false,
+    }
+}
+
 /// Every direction sampler of the library.
 pub fn families() -> Vec<Family> {
     let diffuse = Diffuse {
@@ -310,6 +374,7 @@ pub fn families() -> Vec<Family> {
             Vec3::new(3.0, -1.0, 2.0),
         ),
     ];
+    families.push(continuation_family());
     families.extend(conductor_families());
     families.extend(environment_families());
     families

@@ -23,7 +23,7 @@ use crate::render::{render_image, RenderSettings, Rendered};
 use crate::sampling::SamplerKind;
 use crate::scene::info::describe;
 use crate::scene::Scene;
-use crate::world::World;
+use crate::world::{Casters, World};
 
 /// Renders `tracer`'s radiance estimate for every pixel, up to `-s`
 /// samples each, stopping early where `adaptive` says so.
@@ -118,7 +118,8 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
             lights = lights.with_environment(env);
         }
         let plan = Plan::new(&scene, &lights, &part.tracer, &camera.lens)
-            .with_sampler(args.sampler_kind());
+            .with_sampler(args.sampler_kind())
+            .with_casters(&Casters::new(&scene, args.world_options().casters));
         plan.lines.iter().for_each(|line| println!("{line}"));
         plan.warnings
             .iter()
