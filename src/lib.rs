@@ -19,7 +19,8 @@
 //! piecewise-constant distributions, floating-point helpers), [`lights`] (the light set every part samples:
 //! one interface for every kind of light, built once per render),
 //! [`world`] (the scene as the renderer sees it: intersector, shading
-//! points, which light a surface belongs to), [`sampling`] (the sampler
+//! points, which light a surface belongs to, how a path continues from a
+//! surface, with caustic casters), [`sampling`] (the sampler
 //! interface: independent and Owen-scrambled Sobol' numbers), [`plan`] (which effects a
 //! scene calls for, and the integrator specialised to them), [`scene`] (scene model, the
 //! COLLADA loader, built-in scenes), [`render`] (film, tiles, threads,
