@@ -71,6 +71,10 @@ use crate::math::special::erfinv;
 pub const MIN_ALPHA: f32 = 1e-4;
 
 const SQRT_PI: f64 = 1.772_453_850_905_516;
+/// The `a` past which `Lambda` is below `1e-18` (asymptotically
+/// `exp(-a^2) / (4 a^3 sqrt(pi))`; at 6 about 3e-19), far below the `f32`
+/// precision of the `1 + Lambda` it is added to.
+const LAMBDA_NEGLIGIBLE: f64 = 6.0;
 
 /// An isotropic Beckmann distribution of microfacet normals.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -123,6 +127,12 @@ impl Beckmann {
             return 0.0;
         }
         let a = 1.0 / (f64::from(self.alpha) * tan2.sqrt());
+        // Past a = 6, Lambda < 1e-18: 1 + Lambda rounds to 1 in f32, where
+        // every caller adds it, so skip erfc and exp (most directions of a
+        // smooth surface: a = cot(theta) / alpha).
+        if a > LAMBDA_NEGLIGIBLE {
+            return 0.0;
+        }
         // (erf(a) - 1) / 2 + exp(-a^2) / (2 a sqrt(pi)), without cancellation.
         let lambda = 0.5 * ((-a * a).exp() / (a * SQRT_PI) - libm::erfc(a));
         lambda.max(0.0) as f32
@@ -267,6 +277,22 @@ mod tests {
 
     fn theta_max(alpha: f32) -> f64 {
         (f64::from(alpha) * 12.0).atan().min(PI / 2.0)
+    }
+
+    #[test]
+    fn lambda_skipped_past_six_is_below_f32_precision_of_one_plus_lambda() {
+        for alpha in [0.01f32, 0.025, 0.1, 0.25] {
+            for a in [6.0001f64, 6.5, 8.0, 20.0] {
+                // A direction with cot(theta) = a alpha.
+                let tan = 1.0 / (a * f64::from(alpha));
+                let w = Vec3::new(tan as f32, 0.0, 1.0).normalize();
+                let b = Beckmann::new(alpha);
+                let exact = 0.5 * ((-a * a).exp() / (a * SQRT_PI) - libm::erfc(a));
+                assert!(exact < 1e-18, "alpha {alpha}, a {a}: {exact}");
+                assert_eq!(1.0f32 + exact as f32, 1.0);
+                assert!(b.lambda(w) < 1e-18);
+            }
+        }
     }
 
     #[test]
