@@ -146,6 +146,12 @@ impl Cones {
         self.cones[..self.count][pick].sample(u)
     }
 
+    /// The continuation's density for the unit direction `w` (world
+    /// space): `(1 - c) bsdf_pdf + c pdf(w)`.
+    pub fn mixture_pdf(&self, bsdf_pdf: f32, w: Vec3) -> f32 {
+        (1.0 - CASTER_PROBABILITY) * bsdf_pdf + CASTER_PROBABILITY * self.pdf(w)
+    }
+
     /// The mixture of the cones' densities, each with weight `1 / k`.
     pub fn pdf(&self, w: Vec3) -> f32 {
         if self.count == 0 {

@@ -98,46 +98,43 @@ impl<'a, I: Intersector> World<'a, I> {
         uc: f32,
         u: Vec2,
     ) -> Option<BsdfSample> {
-        let cones = match point.bsdf {
-            Bsdf::Diffuse(_) if !self.casters.is_empty() => {
-                self.casters.cones(point.hit.p, point.frame.z)
-            }
-            _ => return point.bsdf.sample(point.wo, uc, u),
-        };
-        if cones.is_empty() {
+        let Some(cones) = self.caster_cones(point) else {
             return point.bsdf.sample(point.wo, uc, u);
-        }
+        };
         let c = casters::CASTER_PROBABILITY;
-        let (mut sample, wi_world) = if uc < c {
+        let (mut sample, wi_world, bsdf_pdf) = if uc < c {
             let wi_world = cones.sample(uc / c, u);
             let wi = point.frame.to_local(wi_world);
             if wi.z <= 0.0 {
                 return None;
             }
-            let f = point.bsdf.f(point.wo, wi);
-            (BsdfSample::reflection(f, wi, 1.0)?, wi_world)
+            let (f, bsdf_pdf) = point.bsdf.eval(point.wo, wi);
+            (BsdfSample::reflection(f, wi, 1.0)?, wi_world, bsdf_pdf)
         } else {
             let sample = point.bsdf.sample(point.wo, (uc - c) / (1.0 - c), u)?;
-            (sample, point.frame.to_world(sample.wi))
+            (sample, point.frame.to_world(sample.wi), sample.pdf())
         };
-        let bsdf_pdf = point.bsdf.pdf(point.wo, sample.wi);
-        let pdf = (1.0 - c) * bsdf_pdf + c * cones.pdf(wi_world);
-        sample.density = Density::SolidAngle(pdf);
+        sample.density = Density::SolidAngle(cones.mixture_pdf(bsdf_pdf, wi_world));
         Some(sample)
     }
 
     /// Density per steradian of [`World::sample_continuation`] at `point`
-    /// for the direction `wi` (local frame; `wi_world` the same in world
-    /// space), given the BSDF's own density `bsdf_pdf` there.
+    /// for the unit direction `wi_world` (world space), given the BSDF's
+    /// own density `bsdf_pdf` there.
     pub fn continuation_pdf(&self, point: &ShadingPoint, wi_world: Vec3, bsdf_pdf: f32) -> f32 {
+        match self.caster_cones(point) {
+            Some(cones) => cones.mixture_pdf(bsdf_pdf, wi_world),
+            None => bsdf_pdf,
+        }
+    }
+
+    /// The cones of the casters eligible at `point`, if its continuation
+    /// mixes them in: a diffuse BSDF and at least one eligible caster.
+    fn caster_cones(&self, point: &ShadingPoint) -> Option<casters::Cones> {
         if self.casters.is_empty() || !matches!(point.bsdf, Bsdf::Diffuse(_)) {
-            return bsdf_pdf;
+            return None;
         }
         let cones = self.casters.cones(point.hit.p, point.frame.z);
-        if cones.is_empty() {
-            return bsdf_pdf;
-        }
-        let c = casters::CASTER_PROBABILITY;
-        (1.0 - c) * bsdf_pdf + c * cones.pdf(wi_world)
+        (!cones.is_empty()).then_some(cones)
     }
 }
