@@ -80,9 +80,12 @@ pub fn schlick(cos_i: f32, eta: f32) -> f32 {
 
 /// Exact Fresnel reflectance of a conductor with complex index `eta + i k`
 /// (one channel), for `cos_i` in `[0, 1]`, in real arithmetic (see the
-/// module docs): no complex division or square root, all in `f32`.
+/// module docs): no complex division or square root.
 #[inline]
 fn conductor_channel(cos_i: f32, eta: f32, k: f32) -> f32 {
+    // In f64: near grazing incidence on a weakly absorbing index, R_s's
+    // numerator cancels (t1 and t2 both ~ 2 cos_i^2), which f32 loses.
+    let (cos_i, eta, k) = (f64::from(cos_i), f64::from(eta), f64::from(k));
     let cos2 = cos_i * cos_i;
     let sin2 = 1.0 - cos2;
     let (eta2, k2) = (eta * eta, k * k);
@@ -97,7 +100,7 @@ fn conductor_channel(cos_i: f32, eta: f32, k: f32) -> f32 {
     let r_p = r_s * (t3 - t4) / (t3 + t4);
     let f = 0.5 * (r_p + r_s);
     if f.is_finite() {
-        f.clamp(0.0, 1.0)
+        f.clamp(0.0, 1.0) as f32
     } else {
         1.0
     }
@@ -167,26 +170,6 @@ mod tests {
             let re = (0.5 * (r + self.re)).max(0.0).sqrt();
             let im = (0.5 * (r - self.re)).max(0.0).sqrt().copysign(self.im);
             Complex::new(re, im)
-        }
-    }
-
-    /// Exact Fresnel reflectance of a conductor with complex index `eta + i k`
-    /// (one channel), for `cos_i` in `[0, 1]`.
-    fn conductor_channel(cos_i: f32, eta: f32, k: f32) -> f32 {
-        let cos_i = f64::from(cos_i.clamp(0.0, 1.0));
-        let n = Complex::new(f64::from(eta), f64::from(k));
-        let one = Complex::new(1.0, 0.0);
-        let ci = Complex::new(cos_i, 0.0);
-        // Snell's law with a complex index: sin_t^2 = sin_i^2 / n^2.
-        let sin2_t = Complex::new(1.0 - cos_i * cos_i, 0.0).div(n.mul(n));
-        let ct = one.sub(sin2_t).sqrt();
-        let r_par = n.mul(ci).sub(ct).div(n.mul(ci).add(ct));
-        let r_perp = ci.sub(n.mul(ct)).div(ci.add(n.mul(ct)));
-        let f = 0.5 * (r_par.norm_sqr() + r_perp.norm_sqr());
-        if f.is_finite() {
-            f.clamp(0.0, 1.0) as f32
-        } else {
-            1.0
         }
     }
 
