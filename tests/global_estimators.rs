@@ -350,3 +350,69 @@ fn caustic_casters_change_the_variance_not_the_mean() {
         );
     }
 }
+
+/// The cones' share in the light samples' MIS weights: a floor lit by a
+/// rectangle light with a mirror sphere above it, seen through the light
+/// (which is not geometry: rays cross it), so that the light samples in
+/// the sphere's cone reach the light unblocked and both strategies, light
+/// samples and the mixture's continuation, find the same light there.
+/// Direct light only (depth 1), casters off and on agree (two-sample
+/// z-tests at two points) only if both weights use the mixture's density.
+/// Checked by hand: weighting the light samples with the BSDF's density
+/// alone (`continuation_pdf` left out of `DirectLights`) fails.
+#[test]
+fn caustic_casters_keep_the_light_samples_weights_whole() {
+    let mut b = SceneBuilder::new();
+    let floor = b.material(diffuse(0.5));
+    let mirror = b.material(Material::Mirror {
+        reflectance: Vec3::ONE,
+    });
+    b.quad(
+        floor,
+        [
+            Vec3::new(-3.0, 0.0, -3.0),
+            Vec3::new(3.0, 0.0, -3.0),
+            Vec3::new(3.0, 0.0, 3.0),
+            Vec3::new(-3.0, 0.0, 3.0),
+        ],
+    )
+    .sphere(Vec3::new(0.0, 1.5, 0.0), 0.45, mirror)
+    .light(rect_light(
+        5.0,
+        Vec3::new(0.0, 1.0, 0.0),
+        -Vec3::Y,
+        1.2,
+        1.2,
+    ));
+    let scene = b.finish();
+    let bvh = accel(&scene);
+    let with = World::new(&scene, &bvh);
+    assert_eq!(with.casters.spheres.len(), 1);
+    let without = World::with_options(
+        &scene,
+        &bvh,
+        WorldOptions {
+            casters: CasterRule::Off,
+            ..WorldOptions::default()
+        },
+    );
+    let eye = Vec3::new(0.0, 0.5, 1.8);
+    let targets = [Vec3::new(0.0, 0.0, 0.2), Vec3::new(0.4, 0.0, -0.3)];
+    let alpha = ALPHA / targets.len() as f64;
+    for (k, target) in targets.into_iter().enumerate() {
+        let ray = ray_towards(eye, target);
+        let seed = 90 + 2 * k as u64;
+        let off = estimate(&without, &tracer(LIGHTS, 1, false), &ray, 200_000, seed);
+        let on = estimate(&with, &tracer(LIGHTS, 1, false), &ray, 200_000, seed + 1);
+        eprintln!(
+            "LIGHT WEIGHTS towards {target}: without casters {:.5} +- {:.5}, with {:.5} +- {:.5}",
+            off.mean, off.se, on.mean, on.se
+        );
+        assert_means_agree(
+            &format!("floor under a light towards {target}, casters off and on"),
+            off,
+            on,
+            alpha,
+        );
+    }
+}

@@ -15,7 +15,9 @@
 //! | scattering | sampled by a light | 0 | 0 | `w_bsdf` | 1 |
 //! | scattering | sampled by nothing | 0 | 1 | 1 | 1 |
 //!
-//! `w_bsdf = power_heuristic(1, p_bsdf, N, p_light)`: the BSDF sample's
+//! `w_bsdf = power_heuristic(1, p_bsdf, N, p_light)`, with `p_bsdf` the
+//! density the continuation drew the ray with (the BSDF's, or its mixture
+//! with the caustic casters' cones at a diffuse vertex): the BSDF sample's
 //! side of the multiple importance sampling that [`crate::direct::DirectLights`]
 //! weighs its `N` light samples with. With `-H` the hemisphere rays at the
 //! previous vertex already counted every light (through [`found_emission`]
@@ -37,8 +39,10 @@ use crate::world::World;
 pub enum PrevVertex {
     /// The camera or a delta bounce: nothing else could find this light.
     CameraOrDelta,
-    /// A scattering (non-delta) vertex at `p` whose BSDF sampled the ray
-    /// with density `bsdf_pdf` per steradian.
+    /// A scattering (non-delta) vertex at `p` whose continuation sampled
+    /// the ray with density `bsdf_pdf` per steradian: the BSDF's, or at a
+    /// diffuse vertex with caustic casters the mixture's
+    /// ([`World::continuation_pdf`]).
     Scattering { p: Vec3, bsdf_pdf: f32 },
 }
 

@@ -8,9 +8,11 @@
 //!    (the course's `zero_bounce_radiance` for the camera ray);
 //! 2. unless the BSDF is a delta lobe, the direct light estimated at the
 //!    vertex ([`crate::direct`], the course's `one_bounce_radiance`);
-//! 3. then continues in one direction sampled from the BSDF, its
-//!    throughput multiplied by `f |cos| / pdf` and divided by the Russian
-//!    roulette probability:
+//! 3. then continues in one direction sampled from the BSDF (at a diffuse
+//!    vertex, from the BSDF mixed with the caustic casters' cones:
+//!    [`World::sample_continuation`]), its throughput multiplied by
+//!    `f |cos| / pdf`, with `pdf` that sampling's density, and divided by
+//!    the Russian roulette probability:
 //!
 //! ```text
 //! L = sum over vertices k of  beta_k (w L_e + L_direct),

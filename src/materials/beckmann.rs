@@ -64,7 +64,7 @@ use std::f64::consts::PI;
 
 use glam::{Vec2, Vec3};
 
-use crate::math::special::erfinv;
+use crate::math::special::{erfinv, erfinv_estimate};
 
 /// The smallest roughness used: smaller values are clamped to it, so that a
 /// near-mirror stays a (very narrow) finite lobe.
@@ -176,8 +176,10 @@ impl Beckmann {
             alpha * f64::from(wo.y),
             f64::from(wo.z),
         );
-        let r = sx.hypot(sy);
-        let len = r.hypot(sz);
+        // Plain square roots: the components are at most 1 in size, so
+        // `hypot`'s guard against overflow buys nothing here, at a cost.
+        let r = (sx * sx + sy * sy).sqrt();
+        let len = (r * r + sz * sz).sqrt();
         let (cos_theta, sin_theta) = (sz / len, r / len);
         let (cos_phi, sin_phi) = if r > 0.0 {
             (sx / r, sy / r)
@@ -213,21 +215,31 @@ const SLOPE_TOLERANCE: f64 = 1e-8;
 /// The slopes `(x, y)` of a normal visible from the direction at polar
 /// angle `theta` (azimuth 0) on the `alpha = 1` Beckmann surface.
 fn sample_unit_slopes(cos_theta: f64, sin_theta: f64, u: Vec2) -> (f64, f64) {
-    // C(x) as in the module doc, increasing on (-inf, cot(theta)].
-    let cdf = |x: f64| cos_theta * (1.0 + libm::erf(x)) + sin_theta * (-x * x).exp() / SQRT_PI;
-    let density = |x: f64| 2.0 * (cos_theta - x * sin_theta) * (-x * x).exp() / SQRT_PI;
+    // C(x) as in the module doc, increasing on (-inf, cot(theta)], and its
+    // derivative; both need exp(-x^2), computed once for the pair.
+    let cdf = |x: f64, gauss: f64| cos_theta * (1.0 + libm::erf(x)) + sin_theta * gauss / SQRT_PI;
+    let density = |x: f64, gauss: f64| 2.0 * (cos_theta - x * sin_theta) * gauss / SQRT_PI;
     // Beyond |x| = 6 the CDF changes by less than 1e-15 of its range.
-    let mut hi = if sin_theta > 0.0 {
-        (cos_theta / sin_theta).min(6.0)
+    let cot = if sin_theta > 0.0 {
+        cos_theta / sin_theta
     } else {
-        6.0
+        f64::INFINITY
     };
-    let mut lo = -6.0f64;
-    let target = f64::from(u.x).clamp(0.0, 1.0) * cdf(hi);
-    // Start from the normal-incidence answer, erfinv(2 u - 1).
-    let mut x = erfinv(2.0 * f64::from(u.x) - 1.0).clamp(lo, hi);
+    let (mut lo, mut hi) = (-6.0f64, cot.min(6.0));
+    // C(6) is 2 cos(theta) to the last bit when cot(theta) >= 6: erf(6)
+    // rounds to 1, and sin(theta) exp(-36) / sqrt(pi) < 1e-17 cos(theta).
+    let top = if cot >= 6.0 {
+        2.0 * cos_theta
+    } else {
+        cdf(hi, (-hi * hi).exp())
+    };
+    let target = f64::from(u.x).clamp(0.0, 1.0) * top;
+    // Start from the normal-incidence answer, erfinv(2 u - 1), to the
+    // polynomial's 1e-7: the Newton steps below refine it anyway.
+    let mut x = erfinv_estimate(2.0 * f64::from(u.x) - 1.0).clamp(lo, hi);
     for _ in 0..64 {
-        let err = cdf(x) - target;
+        let gauss = (-x * x).exp();
+        let err = cdf(x, gauss) - target;
         if err.abs() <= SLOPE_TOLERANCE * target.max(1e-300) {
             break;
         }
@@ -236,7 +248,7 @@ fn sample_unit_slopes(cos_theta: f64, sin_theta: f64, u: Vec2) -> (f64, f64) {
         } else {
             lo = x;
         }
-        let newton = x - err / density(x);
+        let newton = x - err / density(x, gauss);
         x = if newton > lo && newton < hi {
             newton
         } else {

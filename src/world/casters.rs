@@ -84,38 +84,57 @@ pub struct Caster {
 }
 
 /// The cone of directions in which a caster is seen from a point `p`,
-/// kept as what its density test needs: `w` is inside when
-/// `w . (c - p) >= |c - p| cos(theta_max) = sqrt(d^2 - r^2)`.
+/// kept as what its sampling and density need.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Cone {
     /// `c - p`, not normalised.
     to_center: Vec3,
-    d2: f32,
+    /// The sphere's squared radius.
     r2: f32,
-    /// `sqrt(d^2 - r^2)`, the projection of the cone's edge on its axis.
-    edge: f32,
+    /// `1 - cos(theta_max) = r^2 / (d (d + sqrt(d^2 - r^2)))`, without the
+    /// cancellation of `1 - sqrt(1 - r^2 / d^2)` for a small sphere far away.
+    one_minus_cos_max: f32,
 }
 
+/// How far past the cone's edge [`Cone::pdf`] still counts a direction as
+/// inside, relative to `r^2`: the rounding of a direction the cone drew
+/// (about `1e-7` per component, `d / r` times that relative to the edge)
+/// must not put it outside, or the mixture would weigh it as a BSDF
+/// sample alone. The shell this adds is `1e-5` of the cone's solid
+/// angle, where the density is over-stated: a bias of that order at most.
+const EDGE_MARGIN: f32 = 1e-5;
+
 impl Cone {
-    /// `1 - cos(theta_max) = r^2 / (d (d + sqrt(d^2 - r^2)))`, without the
-    /// cancellation of `1 - cos` for a small sphere far away.
-    fn one_minus_cos_max(&self) -> f32 {
-        let d = self.d2.sqrt();
-        self.r2 / (d * (d + self.edge))
+    /// The cone of the sphere at `to_center` (from the point) of squared
+    /// radius `r2`, for a point outside it (`d^2 > r^2`).
+    fn new(to_center: Vec3, d2: f32, r2: f32) -> Self {
+        let d = d2.sqrt();
+        Cone {
+            to_center,
+            r2,
+            one_minus_cos_max: r2 / (d * (d + (d2 - r2).sqrt())),
+        }
     }
 
     /// A direction (world space) uniform in the cone.
     pub fn sample(&self, u: Vec2) -> Vec3 {
-        let axis = self.to_center / self.d2.sqrt();
-        Frame::from_z(axis)
-            .to_world(sample_uniform_cone(u, self.one_minus_cos_max()))
+        Frame::from_z(self.to_center.normalize())
+            .to_world(sample_uniform_cone(u, self.one_minus_cos_max))
             .normalize()
     }
 
     /// Density of [`Cone::sample`] for the unit direction `w` (world space).
+    ///
+    /// `w` is inside when its angle to the axis has `sin(theta) <= r / d`
+    /// on the axis' side: `|w x (c - p)|^2 <= r^2` with `w . (c - p) > 0`.
+    /// The same test as `cos(theta) >= sqrt(1 - r^2 / d^2)` would compare
+    /// two numbers that agree to all of `f32`'s digits for a small sphere
+    /// far away (`r / d` of 1e-3 or less), and reject the cone's own samples.
     pub fn pdf(&self, w: Vec3) -> f32 {
-        if w.dot(self.to_center) >= self.edge {
-            uniform_cone_pdf(self.one_minus_cos_max())
+        let inside = w.dot(self.to_center) > 0.0
+            && w.cross(self.to_center).length_squared() <= self.r2 * (1.0 + EDGE_MARGIN);
+        if inside {
+            uniform_cone_pdf(self.one_minus_cos_max)
         } else {
             0.0
         }
@@ -130,6 +149,16 @@ pub struct Cones {
 }
 
 impl Cones {
+    /// No cone: the continuation is the BSDF's.
+    pub const NONE: Cones = Cones {
+        cones: [Cone {
+            to_center: Vec3::ZERO,
+            r2: 0.0,
+            one_minus_cos_max: 0.0,
+        }; MAX_CASTERS],
+        count: 0,
+    };
+
     pub fn len(&self) -> usize {
         self.count
     }
@@ -204,10 +233,7 @@ impl Casters {
     /// the unit normal `n` on the side the continuation leaves: `p` is
     /// outside the sphere and the sphere reaches above the plane.
     pub fn cones(&self, p: Vec3, n: Vec3) -> Cones {
-        let mut cones = Cones {
-            cones: [Cone::default(); MAX_CASTERS],
-            count: 0,
-        };
+        let mut cones = Cones::NONE;
         for caster in &self.spheres {
             let to_center = caster.center - p;
             let d2 = to_center.length_squared();
@@ -217,12 +243,7 @@ impl Casters {
             if d2 <= r2 * 1.0001 || to_center.dot(n) <= -caster.radius {
                 continue;
             }
-            cones.cones[cones.count] = Cone {
-                to_center,
-                d2,
-                r2,
-                edge: (d2 - r2).sqrt(),
-            };
+            cones.cones[cones.count] = Cone::new(to_center, d2, r2);
             cones.count += 1;
         }
         cones
@@ -269,6 +290,31 @@ mod tests {
         }
         // Away from the sphere the density is zero.
         assert_eq!(cones.pdf(-Vec3::Y), 0.0);
+    }
+
+    #[test]
+    fn a_small_far_sphere_keeps_its_own_samples_inside() {
+        // r / d = 1e-3, 3e-4 and 1e-4, seen from far from the origin: the
+        // `cos >= sqrt(1 - r^2 / d^2)` test rejected a share of these.
+        let p = Vec3::new(137.0, 0.0, -52.0);
+        for (d, radius) in [(10.0, 0.01), (30.0, 0.01), (100.0, 0.01)] {
+            let center = p + Vec3::new(0.3, 1.0, -0.2).normalize() * d;
+            let cones = one(center, radius).cones(p, Vec3::Y);
+            let solid_angle = 2.0 * std::f64::consts::PI * (radius as f64 / d as f64).powi(2) / 2.0;
+            for i in 0..4096 {
+                let u = Vec2::new(
+                    (i % 64) as f32 / 64.0 + 0.007,
+                    (i / 64) as f32 / 64.0 + 0.003,
+                );
+                let w = cones.sample(0.5, u);
+                let pdf = cones.pdf(w) as f64;
+                assert!(
+                    (pdf * solid_angle - 1.0).abs() < 1e-2,
+                    "d {d}: sample {i} has density {pdf}, expected {}",
+                    1.0 / solid_angle
+                );
+            }
+        }
     }
 
     #[test]

@@ -84,7 +84,9 @@ impl<'a, I: Intersector> World<'a, I> {
     /// `hit` prepared for shading towards the unit direction `wo`.
     pub fn shade(&self, hit: Hit, wo: Vec3) -> ShadingPoint {
         let material = self.material(&hit);
-        ShadingPoint::new(hit, wo, &material, self.bsdf_options)
+        let mut point = ShadingPoint::new(hit, wo, &material, self.bsdf_options);
+        point.cones = self.caster_cones(&point);
+        point
     }
 
     /// The direction a path takes from `point`: `uc` in `[0, 1)` chooses
@@ -98,14 +100,18 @@ impl<'a, I: Intersector> World<'a, I> {
         uc: f32,
         u: Vec2,
     ) -> Option<BsdfSample> {
-        let Some(cones) = self.caster_cones(point) else {
+        let cones = &point.cones;
+        if cones.is_empty() {
             return point.bsdf.sample(point.wo, uc, u);
-        };
+        }
         let c = casters::CASTER_PROBABILITY;
         let (mut sample, wi_world, bsdf_pdf) = if uc < c {
             let wi_world = cones.sample(uc / c, u);
             let wi = point.frame.to_local(wi_world);
-            if wi.z <= 0.0 {
+            // Only diffuse BSDFs mix in cones (`caster_cones`), and they
+            // reflect only: a cone direction below the surface carries
+            // nothing (f = 0), and ends the path; so does a NaN one.
+            if wi.z <= 0.0 || wi.z.is_nan() {
                 return None;
             }
             let (f, bsdf_pdf) = point.bsdf.eval(point.wo, wi);
@@ -122,19 +128,20 @@ impl<'a, I: Intersector> World<'a, I> {
     /// for the unit direction `wi_world` (world space), given the BSDF's
     /// own density `bsdf_pdf` there.
     pub fn continuation_pdf(&self, point: &ShadingPoint, wi_world: Vec3, bsdf_pdf: f32) -> f32 {
-        match self.caster_cones(point) {
-            Some(cones) => cones.mixture_pdf(bsdf_pdf, wi_world),
-            None => bsdf_pdf,
+        if point.cones.is_empty() {
+            bsdf_pdf
+        } else {
+            point.cones.mixture_pdf(bsdf_pdf, wi_world)
         }
     }
 
-    /// The cones of the casters eligible at `point`, if its continuation
-    /// mixes them in: a diffuse BSDF and at least one eligible caster.
-    fn caster_cones(&self, point: &ShadingPoint) -> Option<casters::Cones> {
+    /// The cones of the casters eligible at `point` if its continuation
+    /// mixes them in, which only a diffuse BSDF does (one that reflects
+    /// only: [`World::sample_continuation`] relies on it).
+    fn caster_cones(&self, point: &ShadingPoint) -> casters::Cones {
         if self.casters.is_empty() || !matches!(point.bsdf, Bsdf::Diffuse(_)) {
-            return None;
+            return casters::Cones::NONE;
         }
-        let cones = self.casters.cones(point.hit.p, point.frame.z);
-        (!cones.is_empty()).then_some(cones)
+        self.casters.cones(point.hit.p, point.frame.z)
     }
 }

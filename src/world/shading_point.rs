@@ -9,6 +9,7 @@
 
 use glam::Vec3;
 
+use super::casters::Cones;
 use crate::intersect::Hit;
 use crate::materials::{Bsdf, BsdfOptions};
 use crate::math::{Frame, Rgb};
@@ -28,6 +29,11 @@ pub struct ShadingPoint {
     pub bsdf: Bsdf,
     /// Radiance emitted towards the viewer.
     pub emission: Rgb,
+    /// The cones of the caustic casters the continuation mixes in at this
+    /// point ([`super::casters`]), found once for the continuation and the
+    /// light samples' weights; none unless [`World::shade`](super::World::shade)
+    /// finds some.
+    pub cones: Cones,
 }
 
 impl ShadingPoint {
@@ -43,6 +49,7 @@ impl ShadingPoint {
             front_face,
             bsdf: Bsdf::new(material, front_face, options),
             emission: material.emission(),
+            cones: Cones::NONE,
         }
     }
 }

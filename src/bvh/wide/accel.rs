@@ -54,7 +54,7 @@ impl WideBvhAccel {
         Self::from_binary(&bvh, primitives)
     }
 
-    /// Collapses a binary BVH built over `primitives` (by [`build`]).
+    /// Collapses a binary BVH built over `primitives` (by [`build_from`]).
     pub fn from_binary(bvh: &Bvh, primitives: Primitives) -> Self {
         WideBvhAccel {
             wide: collapse(bvh, &primitives.shapes),
