@@ -47,6 +47,7 @@ pub use roulette::{Roulette, CONTINUE_PROBABILITY, THROUGHPUT_ROULETTE_AFTER};
 
 use crate::direct::{DirectHemisphere, DirectLights};
 use crate::intersect::{Hit, Intersector, Ray};
+use crate::materials::Bsdf;
 use crate::math::Rgb;
 use crate::sampling::Sampler;
 use crate::world::{ShadingPoint, World};
@@ -135,12 +136,18 @@ impl PathTracer {
             if point.bsdf.is_black() {
                 return l;
             }
+            let last = bounces == self.max_depth;
+            let lights_alone = last && self.lights_alone_at_last(world, &point);
             let estimates_direct = !matches!(self.direct, DirectStrategy::BsdfOnly);
             if estimates_direct && self.counts(bounces) && !point.bsdf.is_delta() {
-                l += beta * self.one_bounce(world, &point, sampler);
+                l += beta
+                    * if lights_alone {
+                        self.one_bounce_lights_alone(world, &point, sampler)
+                    } else {
+                        self.one_bounce(world, &point, sampler)
+                    };
             }
-            let last = bounces == self.max_depth;
-            if last && !self.last_ray_can_count(world, point.bsdf.is_delta()) {
+            if last && (lights_alone || !self.last_ray_can_count(world, point.bsdf.is_delta())) {
                 return l;
             }
             let uc = sampler.get_1d();
@@ -195,6 +202,40 @@ impl PathTracer {
             DirectStrategy::Hemisphere(h) => h.estimate(world, point, sampler),
             DirectStrategy::Lights(d) => d.estimate(world, point, sampler),
             DirectStrategy::BsdfOnly => Rgb::ZERO,
+        }
+    }
+
+    /// Whether the last vertex (`point`) takes its direct light from light
+    /// samples alone, unweighted, and traces no continuation ray.
+    ///
+    /// With MIS the last vertex's continuation ray only looks for emission,
+    /// the BSDF side of the light samples' weights: a full trace for a
+    /// share of light that the light samples find as well, wherever every
+    /// emitter is sampled by a light (light sampling alone is then unbiased,
+    /// as with `--no-mis`) and the BSDF has no peak that light samples
+    /// would miss. A diffuse BSDF has none, so there the light samples take
+    /// the whole weight and the ray is not traced. The choice depends on
+    /// the vertex alone, so each vertex still uses one unbiased estimator;
+    /// glossy, glass and mirror vertices keep MIS and the ray.
+    fn lights_alone_at_last<I: Intersector>(&self, world: &World<I>, point: &ShadingPoint) -> bool {
+        self.direct.mis()
+            && matches!(point.bsdf, Bsdf::Diffuse(_))
+            && !world.lights.has_unsampled_emitters()
+    }
+
+    /// Direct light at `point` by the light samples of [`DirectStrategy::Lights`]
+    /// without MIS ([`PathTracer::lights_alone_at_last`]).
+    fn one_bounce_lights_alone<I: Intersector>(
+        &self,
+        world: &World<I>,
+        point: &ShadingPoint,
+        sampler: &mut impl Sampler,
+    ) -> Rgb {
+        match self.direct {
+            DirectStrategy::Lights(d) => {
+                DirectLights { mis: false, ..d }.estimate(world, point, sampler)
+            }
+            _ => self.one_bounce(world, point, sampler),
         }
     }
 
