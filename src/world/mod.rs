@@ -19,6 +19,9 @@ use crate::lights::{LightChoiceRule, LightConvention, LightSet};
 use crate::materials::{Bsdf, BsdfOptions, BsdfSample, Density};
 use crate::scene::{Material, Scene};
 
+/// The largest `f32` below 1, where a stretched uniform number is clamped.
+const ONE_BELOW_ONE: f32 = 1.0 - f32::EPSILON / 2.0;
+
 /// Choices about the scene's appearance that a render makes once.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct WorldOptions {
@@ -89,11 +92,15 @@ impl<'a, I: Intersector> World<'a, I> {
         point
     }
 
-    /// The direction a path takes from `point`: `uc` in `[0, 1)` chooses
-    /// between the casters' cones and the BSDF (then the BSDF's lobe), `u`
-    /// the direction. The sample's density is the mixture's
-    /// ([`World::continuation_pdf`]), so its weight `f |cos| / p` is the
-    /// path's; without eligible casters it is the BSDF's sample.
+    /// The direction a path takes from `point`, from `uc` and `u` in
+    /// `[0, 1)`. Without eligible casters it is the BSDF's sample (`uc`
+    /// its lobe, `u` the direction). With casters, `u.x < c` chooses the
+    /// cones (`uc` then picks the cone), else the BSDF, and `u.x` is
+    /// stretched back to `[0, 1)` within the branch taken: so each
+    /// branch's directions keep the stratification of the sampler's 2D
+    /// points, as a separate uniform number for the choice would not. The
+    /// sample's density is the mixture's ([`World::continuation_pdf`]),
+    /// so its weight `f |cos| / p` is the path's.
     pub fn sample_continuation(
         &self,
         point: &ShadingPoint,
@@ -105,8 +112,8 @@ impl<'a, I: Intersector> World<'a, I> {
             return point.bsdf.sample(point.wo, uc, u);
         }
         let c = casters::CASTER_PROBABILITY;
-        let (mut sample, wi_world, bsdf_pdf) = if uc < c {
-            let wi_world = cones.sample(uc / c, u);
+        let (mut sample, wi_world, bsdf_pdf) = if u.x < c {
+            let wi_world = cones.sample(uc, Vec2::new(u.x / c, u.y));
             let wi = point.frame.to_local(wi_world);
             // Only diffuse BSDFs mix in cones (`caster_cones`), and they
             // reflect only: a cone direction below the surface carries
@@ -117,7 +124,8 @@ impl<'a, I: Intersector> World<'a, I> {
             let (f, bsdf_pdf) = point.bsdf.eval(point.wo, wi);
             (BsdfSample::reflection(f, wi, 1.0)?, wi_world, bsdf_pdf)
         } else {
-            let sample = point.bsdf.sample(point.wo, (uc - c) / (1.0 - c), u)?;
+            let stretched = ((u.x - c) / (1.0 - c)).min(ONE_BELOW_ONE);
+            let sample = point.bsdf.sample(point.wo, uc, Vec2::new(stretched, u.y))?;
             (sample, point.frame.to_world(sample.wi), sample.pdf())
         };
         sample.density = Density::SolidAngle(cones.mixture_pdf(bsdf_pdf, wi_world));
