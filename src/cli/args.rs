@@ -128,8 +128,10 @@ pub struct CourseArgs {
 
     /// How microfacet BSDFs sample directions: `half-vector` as the
     /// course does (Beckmann D cos), `cosine` ignoring the lobe (the
-    /// baseline), or the visible normals (the default, least noise).
-    #[arg(long, value_enum, value_name = "STRATEGY", default_value_t = MicrofacetSamplingArg::VisibleNormals)]
+    /// baseline), `visible-normals` (least noise, slower), or `auto` (the
+    /// default: the half vector where alpha tan(theta_o) < 0.1, the two
+    /// nearly coinciding there, the visible normals elsewhere).
+    #[arg(long, value_enum, value_name = "STRATEGY", default_value_t = MicrofacetSamplingArg::Auto)]
     pub microfacet_sampling: MicrofacetSamplingArg,
 
     /// Lens radius (thin-lens depth of field, part 8); 0 is a pinhole.
@@ -323,10 +325,7 @@ mod tests {
             ),
             (1, 1, 800, 600)
         );
-        assert_eq!(
-            a.world_options().bsdf.microfacet,
-            MicrofacetSampling::VisibleNormals
-        );
+        assert_eq!(a.world_options().bsdf.microfacet, MicrofacetSampling::Auto);
     }
 
     #[test]
@@ -335,6 +334,7 @@ mod tests {
             ("cosine", MicrofacetSampling::CosineHemisphere),
             ("half-vector", MicrofacetSampling::HalfVector),
             ("visible-normals", MicrofacetSampling::VisibleNormals),
+            ("auto", MicrofacetSampling::Auto),
         ] {
             let a = CourseArgs::try_parse_from(["p", "--microfacet-sampling", name]).unwrap();
             assert_eq!(a.world_options().bsdf.microfacet, sampling, "{name}");

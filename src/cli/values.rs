@@ -44,8 +44,11 @@ pub enum MicrofacetSamplingArg {
     /// The Beckmann half vector from `D(h) cos(theta_h)` (the course's).
     HalfVector,
     /// The normals visible from `wo` (Heitz and d'Eon 2014).
-    #[default]
     VisibleNormals,
+    /// The half vector where `alpha tan(theta_o) < 0.1` (the two nearly
+    /// coincide there, and it is faster), the visible normals elsewhere.
+    #[default]
+    Auto,
 }
 
 impl From<MicrofacetSamplingArg> for MicrofacetSampling {
@@ -54,6 +57,7 @@ impl From<MicrofacetSamplingArg> for MicrofacetSampling {
             MicrofacetSamplingArg::Cosine => MicrofacetSampling::CosineHemisphere,
             MicrofacetSamplingArg::HalfVector => MicrofacetSampling::HalfVector,
             MicrofacetSamplingArg::VisibleNormals => MicrofacetSampling::VisibleNormals,
+            MicrofacetSamplingArg::Auto => MicrofacetSampling::Auto,
         }
     }
 }

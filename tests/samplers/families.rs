@@ -120,12 +120,15 @@ fn conductor_family(alpha: f32, cos_o: f32, sampling: MicrofacetSampling) -> Fam
     }
 }
 
-/// Conductor families: both strategies, smooth to rough, normal to grazing.
+/// Conductor families: the three strategies, smooth to rough, normal to
+/// grazing (`Auto` takes the half vector at `alpha` 0.01 up to `cos_o` 0.5
+/// and at `alpha` 0.1 at normal incidence, the visible normals at the rest).
 fn conductor_families() -> Vec<Family> {
     let mut families = Vec::new();
     for sampling in [
         MicrofacetSampling::HalfVector,
         MicrofacetSampling::VisibleNormals,
+        MicrofacetSampling::Auto,
     ] {
         for alpha in [0.01, 0.1, 0.5, 1.0] {
             for cos_o in [1.0, 0.5, 0.05] {
