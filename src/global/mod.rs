@@ -131,13 +131,17 @@ impl PathTracer {
             if bounces > self.max_depth {
                 return l;
             }
-            // Shading only where the path goes on (not for the last ray).
-            let point = world.shade(hit, -ray.dir);
+            // Shading only where the path goes on (not for the last ray),
+            // and the casters' cones only where it may go on from here.
+            let mut point = world.shade_surface(hit, -ray.dir);
             if point.bsdf.is_black() {
                 return l;
             }
             let last = bounces == self.max_depth;
             let lights_alone = last && self.lights_alone_at_last(world, &point);
+            if !lights_alone {
+                world.add_caster_cones(&mut point);
+            }
             let estimates_direct = !matches!(self.direct, DirectStrategy::BsdfOnly);
             if estimates_direct && self.counts(bounces) && !point.bsdf.is_delta() {
                 l += beta

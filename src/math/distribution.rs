@@ -30,6 +30,7 @@
 //! marginal with `u.y`, then the column from that row's conditional with
 //! `u.x`; the inverse maps a point back to the `u` that gives it.
 
+use crate::math::float::ONE_BELOW_ONE;
 use glam::Vec2;
 
 /// A piecewise-constant density on `[0, 1]`.
@@ -151,7 +152,7 @@ impl Distribution1D {
             .unwrap_or(i);
         let width = self.cell_probability(i);
         let du = ((u - self.cdf[i]) / width).clamp(0.0, 1.0);
-        let x = ((i as f32 + du) / n as f32).min(1.0 - f32::EPSILON / 2.0);
+        let x = ((i as f32 + du) / n as f32).min(ONE_BELOW_ONE);
         DistributionSample {
             x,
             pdf: width * n as f32,

@@ -3,6 +3,10 @@
 /// Half the distance between 1 and the next `f32`: the unit roundoff u.
 pub const MACHINE_EPSILON: f32 = f32::EPSILON * 0.5;
 
+/// The largest `f32` below 1, where a uniform number stretched back to
+/// `[0, 1)` (after choosing a branch by it) is clamped.
+pub const ONE_BELOW_ONE: f32 = 1.0 - MACHINE_EPSILON;
+
 /// Conservative bound gamma(n) = n u / (1 - n u) on the relative error of
 /// `n` chained floating-point operations (pbrt-v4, eq. 6.23).
 pub const fn gamma(n: i32) -> f32 {

@@ -22,6 +22,7 @@ use crate::materials::{Bsdf, BsdfOptions};
 use crate::math::{luminance, Rgb};
 use crate::sampling::SamplerKind;
 use crate::scene::{Material, Scene};
+use crate::world::casters::images::IMAGE_ALPHA;
 use crate::world::casters::{Casters, CASTER_PROBABILITY, SMOOTH_ALPHA};
 
 /// The kinds of scattering a scene's used materials have.
@@ -227,8 +228,14 @@ impl Plan {
         } else if !self.bsdfs.diffuse {
             format!("plan: caustic casters: {n} sphere(s), unused: no surface is diffuse")
         } else {
+            let images = match casters.images() {
+                0 => String::new(),
+                k => format!(
+                    ", and {k} light image(s) in mirror-like ones (mirror, conductor with alpha <= {IMAGE_ALPHA})"
+                ),
+            };
             format!(
-                "plan: caustic casters: {n} sphere(s) (mirror, glass, conductor with alpha <= {SMOOTH_ALPHA}): \
+                "plan: caustic casters: {n} sphere(s) (mirror, glass, conductor with alpha <= {SMOOTH_ALPHA}){images}: \
                  diffuse surfaces draw {CASTER_PROBABILITY} of their continuations towards them"
             )
         });

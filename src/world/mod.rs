@@ -17,10 +17,8 @@ use glam::{Vec2, Vec3};
 use crate::intersect::{Hit, Intersector, Ray};
 use crate::lights::{LightChoiceRule, LightConvention, LightSet};
 use crate::materials::{Bsdf, BsdfOptions, BsdfSample, Density};
+use crate::math::float::ONE_BELOW_ONE;
 use crate::scene::{Material, Scene};
-
-/// The largest `f32` below 1, where a stretched uniform number is clamped.
-const ONE_BELOW_ONE: f32 = 1.0 - f32::EPSILON / 2.0;
 
 /// Choices about the scene's appearance that a render makes once.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -52,13 +50,14 @@ impl<'a, I: Intersector> World<'a, I> {
     }
 
     pub fn with_options(scene: &'a Scene, intersector: I, options: WorldOptions) -> Self {
+        let lights =
+            LightSet::new(scene, options.light_convention).with_choice(options.light_choice);
         World {
             intersector,
             materials: &scene.materials,
-            lights: LightSet::new(scene, options.light_convention)
-                .with_choice(options.light_choice),
+            casters: Casters::new(scene, &lights, options.casters),
+            lights,
             bsdf_options: options.bsdf,
-            casters: Casters::new(scene, options.casters),
         }
     }
 
@@ -86,19 +85,33 @@ impl<'a, I: Intersector> World<'a, I> {
 
     /// `hit` prepared for shading towards the unit direction `wo`.
     pub fn shade(&self, hit: Hit, wo: Vec3) -> ShadingPoint {
-        let material = self.material(&hit);
-        let mut point = ShadingPoint::new(hit, wo, &material, self.bsdf_options);
-        point.cones = self.caster_cones(&point);
+        let mut point = self.shade_surface(hit, wo);
+        self.add_caster_cones(&mut point);
         point
+    }
+
+    /// [`World::shade`] without the caster cones, which only the
+    /// continuation and its density read: for a vertex where the path
+    /// ends (then [`World::add_caster_cones`] if it goes on after all).
+    pub fn shade_surface(&self, hit: Hit, wo: Vec3) -> ShadingPoint {
+        let material = self.material(&hit);
+        ShadingPoint::new(hit, wo, &material, self.bsdf_options)
+    }
+
+    /// Fills in the cones of the casters that `point`'s continuation
+    /// mixes in ([`World::sample_continuation`]).
+    pub fn add_caster_cones(&self, point: &mut ShadingPoint) {
+        point.cones = self.caster_cones(point);
     }
 
     /// The direction a path takes from `point`, from `uc` and `u` in
     /// `[0, 1)`. Without eligible casters it is the BSDF's sample (`uc`
     /// its lobe, `u` the direction). With casters, `u.x < c` chooses the
-    /// cones (`uc` then picks the cone), else the BSDF, and `u.x` is
-    /// stretched back to `[0, 1)` within the branch taken: so each
-    /// branch's directions keep the stratification of the sampler's 2D
-    /// points, as a separate uniform number for the choice would not. The
+    /// cones, else the BSDF (`uc` its lobe), and `u.x` is stretched back
+    /// to `[0, 1)` within the branch taken (and within the cone taken,
+    /// [`casters::Cones::sample`]): so each branch's directions keep the
+    /// stratification of the sampler's 2D points, as a separate uniform
+    /// number for the choice would not. The
     /// sample's density is the mixture's ([`World::continuation_pdf`]),
     /// so its weight `f |cos| / p` is the path's.
     pub fn sample_continuation(
@@ -113,7 +126,7 @@ impl<'a, I: Intersector> World<'a, I> {
         }
         let c = casters::CASTER_PROBABILITY;
         let (mut sample, wi_world, bsdf_pdf) = if u.x < c {
-            let wi_world = cones.sample(uc, Vec2::new(u.x / c, u.y));
+            let wi_world = cones.sample(Vec2::new(u.x / c, u.y));
             let wi = point.frame.to_local(wi_world);
             // Only diffuse BSDFs mix in cones (`caster_cones`), and they
             // reflect only: a cone direction below the surface carries

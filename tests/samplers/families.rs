@@ -258,10 +258,12 @@ fn environment_families() -> Vec<Family> {
 
 /// The path's continuation at a diffuse floor point under two caustic
 /// casters (a mirror sphere and a smooth conductor, wholly above the
-/// floor): the mixture of the cosine lobe and the spheres' cones
-/// (`World::sample_continuation`, `World::continuation_pdf`). The family
-/// takes a 2D number; the 1D number that chooses between cosine and cones
-/// comes from its own fixed stream, independent of it.
+/// floor) lit by a rectangle light: the mixture of the cosine lobe, the
+/// spheres' cones and the narrower cones around the light's image in
+/// each (`World::sample_continuation`, `World::continuation_pdf`). The
+/// family's 2D number chooses the branch and the cone and draws the
+/// direction; the 1D number (the BSDF's lobe, unused by a diffuse one)
+/// comes from its own fixed stream.
 fn continuation_family() -> Family {
     let mut b = SceneBuilder::new();
     let floor = b.material(diffuse(0.7));
@@ -283,7 +285,14 @@ fn continuation_family() -> Family {
         ],
     )
     .sphere(Vec3::new(0.5, 0.6, 0.2), 0.3, mirror)
-    .sphere(Vec3::new(-0.8, 1.5, -0.4), 0.5, smooth);
+    .sphere(Vec3::new(-0.8, 1.5, -0.4), 0.5, smooth)
+    .light(rect_light(
+        10.0,
+        Vec3::new(-0.3, 2.5, 0.6),
+        -Vec3::Y,
+        0.8,
+        0.6,
+    ));
     // The world borrows the scene and its BVH for the family's lifetime.
     let scene: &'static Scene = Box::leak(Box::new(b.finish()));
     let bvh: &'static BvhAccel = Box::leak(Box::new(accel(scene)));
@@ -294,9 +303,11 @@ fn continuation_family() -> Family {
         Vec3::new(0.1, -1.0, 0.05).normalize(),
     );
     let point = world.trace(&down).expect("the ray meets the floor");
+    // Both spheres' cones and both light images.
+    assert_eq!(point.cones.len(), 4);
     let state = std::cell::Cell::new(0x9e37_79b9_7f4a_7c15u64);
     Family {
-        name: "diffuse continuation with two caster cones".into(),
+        name: "diffuse continuation with two caster cones and two light images".into(),
         sample: Box::new(move |u| {
             // SplitMix64 (Steele, Lea and Flood 2014) for the choice.
             let z = state.get().wrapping_add(0x9e37_79b9_7f4a_7c15);

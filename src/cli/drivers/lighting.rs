@@ -119,7 +119,7 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
         }
         let plan = Plan::new(&scene, &lights, &part.tracer, &camera.lens)
             .with_sampler(args.sampler_kind())
-            .with_casters(&Casters::new(&scene, args.world_options().casters));
+            .with_casters(&Casters::new(&scene, &lights, args.world_options().casters));
         plan.lines.iter().for_each(|line| println!("{line}"));
         plan.warnings
             .iter()

@@ -40,11 +40,23 @@
 //! lobe already samples where it reflects. A scene without casters (or
 //! with more than [`MAX_CASTERS`], where the per-vertex loop would cost
 //! more than it saves) renders exactly as without this module.
+//!
+//! A mirror sphere (or a conductor up to [`images::IMAGE_ALPHA`]) adds,
+//! for each rectangle light, a narrower cone around the light's image in
+//! it ([`images`]): the directions whose reflection reaches the light,
+//! a small part of the sphere's cone. It is one more cone `j` of the sum
+//! above, found per vertex like the sphere's.
+
+pub mod cone;
+pub mod images;
+
+pub use cone::Cone;
+pub use images::ImagedLight;
 
 use glam::{Vec2, Vec3};
 
-use crate::math::warp::{sample_uniform_cone, uniform_cone_pdf};
-use crate::math::Frame;
+use crate::lights::LightSet;
+use crate::math::float::ONE_BELOW_ONE;
 use crate::scene::{Material, Scene};
 
 /// Probability `c` of drawing the continuation from the casters' cones
@@ -66,6 +78,10 @@ pub const SMOOTH_ALPHA: f32 = 0.3;
 /// More casters than this and none are used.
 pub const MAX_CASTERS: usize = 8;
 
+/// The most cones a vertex mixes: its casters' and up to four light
+/// images (more are left out).
+pub const MAX_CONES: usize = MAX_CASTERS + 4;
+
 /// Whether a render samples towards caustic casters (`--casters`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum CasterRule {
@@ -81,81 +97,22 @@ pub enum CasterRule {
 pub struct Caster {
     pub center: Vec3,
     pub radius: f32,
-}
-
-/// The cone of directions in which a caster is seen from a point `p`,
-/// kept as what its sampling and density need.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct Cone {
-    /// `c - p`, not normalised.
-    to_center: Vec3,
-    /// The sphere's squared radius.
-    r2: f32,
-    /// `1 - cos(theta_max) = r^2 / (d (d + sqrt(d^2 - r^2)))`, without the
-    /// cancellation of `1 - sqrt(1 - r^2 / d^2)` for a small sphere far away.
-    one_minus_cos_max: f32,
-}
-
-/// How far past the cone's edge [`Cone::pdf`] still counts a direction as
-/// inside, relative to `r^2`: the rounding of a direction the cone drew
-/// (about `1e-7` per component, `d / r` times that relative to the edge)
-/// must not put it outside, or the mixture would weigh it as a BSDF
-/// sample alone. The shell this adds is `1e-5` of the cone's solid
-/// angle, where the density is over-stated: a bias of that order at most.
-const EDGE_MARGIN: f32 = 1e-5;
-
-impl Cone {
-    /// The cone of the sphere at `to_center` (from the point) of squared
-    /// radius `r2`, for a point outside it (`d^2 > r^2`).
-    fn new(to_center: Vec3, d2: f32, r2: f32) -> Self {
-        let d = d2.sqrt();
-        Cone {
-            to_center,
-            r2,
-            one_minus_cos_max: r2 / (d * (d + (d2 - r2).sqrt())),
-        }
-    }
-
-    /// A direction (world space) uniform in the cone.
-    pub fn sample(&self, u: Vec2) -> Vec3 {
-        Frame::from_z(self.to_center.normalize())
-            .to_world(sample_uniform_cone(u, self.one_minus_cos_max))
-            .normalize()
-    }
-
-    /// Density of [`Cone::sample`] for the unit direction `w` (world space).
-    ///
-    /// `w` is inside when its angle to the axis has `sin(theta) <= r / d`
-    /// on the axis' side: `|w x (c - p)|^2 <= r^2` with `w . (c - p) > 0`.
-    /// The same test as `cos(theta) >= sqrt(1 - r^2 / d^2)` would compare
-    /// two numbers that agree to all of `f32`'s digits for a small sphere
-    /// far away (`r / d` of 1e-3 or less), and reject the cone's own samples.
-    pub fn pdf(&self, w: Vec3) -> f32 {
-        let inside = w.dot(self.to_center) > 0.0
-            && w.cross(self.to_center).length_squared() <= self.r2 * (1.0 + EDGE_MARGIN);
-        if inside {
-            uniform_cone_pdf(self.one_minus_cos_max)
-        } else {
-            0.0
-        }
-    }
+    /// How much its reflection widens a light, if it shows light images
+    /// ([`images::image_spread`]).
+    pub image_spread: Option<f32>,
 }
 
 /// The cones of the casters eligible at one vertex.
 #[derive(Clone, Copy, Debug)]
 pub struct Cones {
-    cones: [Cone; MAX_CASTERS],
+    cones: [Cone; MAX_CONES],
     count: usize,
 }
 
 impl Cones {
     /// No cone: the continuation is the BSDF's.
     pub const NONE: Cones = Cones {
-        cones: [Cone {
-            to_center: Vec3::ZERO,
-            r2: 0.0,
-            one_minus_cos_max: 0.0,
-        }; MAX_CASTERS],
+        cones: [Cone::EMPTY; MAX_CONES],
         count: 0,
     };
 
@@ -167,12 +124,25 @@ impl Cones {
         self.count == 0
     }
 
-    /// A direction (world space) from cone `min(floor(uc k), k - 1)`:
-    /// `uc` in `[0, 1)` chooses the cone, `u` the direction within it.
-    /// Panics if there is no cone.
-    pub fn sample(&self, uc: f32, u: Vec2) -> Vec3 {
-        let pick = ((uc * self.count as f32) as usize).min(self.count - 1);
-        self.cones[..self.count][pick].sample(u)
+    /// Adds `cone`, unless there are [`MAX_CONES`] already.
+    fn push(&mut self, cone: Cone) {
+        if self.count < MAX_CONES {
+            self.cones[self.count] = cone;
+            self.count += 1;
+        }
+    }
+
+    /// A direction (world space) from cone `j = min(floor(u.x k), k - 1)`,
+    /// with `u.x` stretched back to `[0, 1)` within the cone's share,
+    /// `(u.x k - j, u.y)`, choosing the direction: so the directions of
+    /// each cone are a stratified set when the 2D points `u` are, as they
+    /// would not be if a separate number chose the cone. Panics if there
+    /// is no cone.
+    pub fn sample(&self, u: Vec2) -> Vec3 {
+        let scaled = u.x * self.count as f32;
+        let pick = (scaled as usize).min(self.count - 1);
+        let stretched = (scaled - pick as f32).min(ONE_BELOW_ONE);
+        self.cones[..self.count][pick].sample(Vec2::new(stretched, u.y))
     }
 
     /// The continuation's density for the unit direction `w` (world
@@ -195,11 +165,15 @@ impl Cones {
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Casters {
     pub spheres: Vec<Caster>,
+    /// The lights whose images mirror-like casters show.
+    pub lights: Vec<ImagedLight>,
 }
 
 impl Casters {
-    /// The smooth spheres of `scene` under `rule` (none past [`MAX_CASTERS`]).
-    pub fn new(scene: &Scene, rule: CasterRule) -> Self {
+    /// The smooth spheres of `scene` under `rule` (none past
+    /// [`MAX_CASTERS`]), with the images of the rectangle lights of
+    /// `lights` in the mirror-like ones.
+    pub fn new(scene: &Scene, lights: &LightSet, rule: CasterRule) -> Self {
         if rule == CasterRule::Off {
             return Casters::default();
         }
@@ -217,12 +191,31 @@ impl Casters {
             .map(|s| Caster {
                 center: s.center,
                 radius: s.radius,
+                image_spread: scene
+                    .materials
+                    .get(s.material as usize)
+                    .and_then(images::image_spread),
             })
             .collect();
         if spheres.len() > MAX_CASTERS {
             return Casters::default();
         }
-        Casters { spheres }
+        let mirrors = spheres.iter().any(|s| s.image_spread.is_some());
+        Casters {
+            spheres,
+            lights: if mirrors {
+                ImagedLight::of(lights)
+            } else {
+                Vec::new()
+            },
+        }
+    }
+
+    /// How many light images the casters can show: mirror-like casters
+    /// times lights.
+    pub fn images(&self) -> usize {
+        let mirrors = self.spheres.iter().filter(|s| s.image_spread.is_some());
+        mirrors.count() * self.lights.len()
     }
 
     pub fn is_empty(&self) -> bool {
@@ -243,8 +236,15 @@ impl Casters {
             if d2 <= r2 * 1.0001 || to_center.dot(n) <= -caster.radius {
                 continue;
             }
-            cones.cones[cones.count] = Cone::new(to_center, d2, r2);
-            cones.count += 1;
+            cones.push(Cone::of_sphere(to_center, d2, r2));
+            let Some(spread) = caster.image_spread else {
+                continue;
+            };
+            for light in &self.lights {
+                if let Some(image) = images::image_cone(p, caster, light, spread) {
+                    cones.push(image);
+                }
+            }
         }
         cones
     }
@@ -256,7 +256,12 @@ mod tests {
 
     fn one(center: Vec3, radius: f32) -> Casters {
         Casters {
-            spheres: vec![Caster { center, radius }],
+            spheres: vec![Caster {
+                center,
+                radius,
+                image_spread: None,
+            }],
+            lights: Vec::new(),
         }
     }
 
@@ -280,7 +285,7 @@ mod tests {
         let solid_angle = 2.0 * std::f32::consts::PI * (1.0 - (1.0 - (radius / d).powi(2)).sqrt());
         for i in 0..64 {
             let u = Vec2::new((i % 8) as f32 / 8.0 + 0.06, (i / 8) as f32 / 8.0 + 0.03);
-            let w = cones.sample(0.5, u);
+            let w = cones.sample(u);
             assert!((w.length() - 1.0).abs() < 1e-5);
             // The ray from the origin along w meets the sphere.
             let b = w.dot(center);
@@ -306,7 +311,7 @@ mod tests {
                     (i % 64) as f32 / 64.0 + 0.007,
                     (i / 64) as f32 / 64.0 + 0.003,
                 );
-                let w = cones.sample(0.5, u);
+                let w = cones.sample(u);
                 let pdf = cones.pdf(w) as f64;
                 assert!(
                     (pdf * solid_angle - 1.0).abs() < 1e-2,
@@ -347,9 +352,10 @@ mod tests {
             spheres,
             ..Scene::default()
         };
-        let casters = Casters::new(&scene, CasterRule::Auto);
+        let lights = LightSet::new(&scene, Default::default());
+        let casters = Casters::new(&scene, &lights, CasterRule::Auto);
         let centers: Vec<f32> = casters.spheres.iter().map(|c| c.center.x).collect();
         assert_eq!(centers, vec![1.0, 3.0]);
-        assert!(Casters::new(&scene, CasterRule::Off).is_empty());
+        assert!(Casters::new(&scene, &lights, CasterRule::Off).is_empty());
     }
 }

@@ -1,0 +1,125 @@
+//! A cone of directions sampled uniformly: the solid angle a caster
+//! subtends from a point, or a narrower cone around the image of a light
+//! in a mirror-like caster ([`super::images`]).
+//!
+//! A cone is kept as its axis `a` (not necessarily unit) and the squared
+//! sine of its half-angle times `|a|^2`: a unit direction `w` is inside
+//! when `|w x a|^2 <= sin^2(theta_max) |a|^2` with `w . a > 0`. For a
+//! sphere of radius `r` whose centre is at `a` from the point, that bound
+//! is `r^2`, and the test needs no square root and no cosine (which, for
+//! a small sphere far away, agrees with `cos(theta_max)` to all of `f32`'s
+//! digits). Uniform in the cone, the density is
+//! `1 / (2 pi (1 - cos(theta_max)))` (pbrt-v4, section 6.2.4).
+
+use glam::{Vec2, Vec3};
+
+use crate::math::warp::{sample_uniform_cone, uniform_cone_pdf};
+use crate::math::Frame;
+
+/// How far past the cone's edge [`Cone::pdf`] still counts a direction as
+/// inside, relative to its bound: the rounding of a direction the cone
+/// drew (about `1e-7` per component, `d / r` times that relative to the
+/// edge) must not put it outside, or the mixture would weigh it as a BSDF
+/// sample alone. The shell this adds is `1e-5` of the cone's solid angle,
+/// where the density is over-stated: a bias of that order at most.
+const EDGE_MARGIN: f32 = 1e-5;
+
+/// A cone of directions from a point, kept as what its sampling and
+/// density need.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Cone {
+    /// The axis, not necessarily unit (for a sphere: `c - p`).
+    axis: Vec3,
+    /// `sin^2(theta_max) |axis|^2` (for a sphere: `r^2`).
+    bound: f32,
+    /// `1 - cos(theta_max)`, without the cancellation of
+    /// `1 - sqrt(1 - sin^2)` for a narrow cone.
+    one_minus_cos_max: f32,
+}
+
+impl Cone {
+    /// No directions (a placeholder in a fixed-size list).
+    pub const EMPTY: Cone = Cone {
+        axis: Vec3::ZERO,
+        bound: 0.0,
+        one_minus_cos_max: 0.0,
+    };
+
+    /// The cone of the sphere at `to_center` (from the point, squared
+    /// length `d2`) of squared radius `r2`, for a point outside it
+    /// (`d2 > r2`): `1 - cos(theta_max) = r^2 / (d (d + sqrt(d^2 - r^2)))`.
+    pub fn of_sphere(to_center: Vec3, d2: f32, r2: f32) -> Self {
+        let d = d2.sqrt();
+        Cone {
+            axis: to_center,
+            bound: r2,
+            one_minus_cos_max: r2 / (d * (d + (d2 - r2).sqrt())),
+        }
+    }
+
+    /// The cone around the unit direction `axis` whose half-angle
+    /// `theta_max`, below `pi / 2`, has the sine `sin_max` (in `(0, 1)`):
+    /// `1 - cos = sin^2 / (1 + sqrt(1 - sin^2))`.
+    pub fn around(axis: Vec3, sin_max: f32) -> Self {
+        let sin2 = sin_max * sin_max;
+        Cone {
+            axis,
+            bound: sin2,
+            one_minus_cos_max: sin2 / (1.0 + (1.0 - sin2).sqrt()),
+        }
+    }
+
+    /// The cone's solid angle, `2 pi (1 - cos(theta_max))`.
+    pub fn solid_angle(&self) -> f32 {
+        1.0 / uniform_cone_pdf(self.one_minus_cos_max)
+    }
+
+    /// A direction (world space) uniform in the cone.
+    pub fn sample(&self, u: Vec2) -> Vec3 {
+        Frame::from_z(self.axis.normalize())
+            .to_world(sample_uniform_cone(u, self.one_minus_cos_max))
+            .normalize()
+    }
+
+    /// Density of [`Cone::sample`] for the unit direction `w` (world space).
+    pub fn pdf(&self, w: Vec3) -> f32 {
+        let inside = w.dot(self.axis) > 0.0
+            && w.cross(self.axis).length_squared() <= self.bound * (1.0 + EDGE_MARGIN);
+        if inside {
+            uniform_cone_pdf(self.one_minus_cos_max)
+        } else {
+            0.0
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_cone_around_an_axis_holds_its_samples_with_its_density() {
+        let axis = Vec3::new(0.3, -0.8, 0.2).normalize();
+        for theta_max in [1e-3f32, 0.05, 0.4, 1.2] {
+            let cone = Cone::around(axis, theta_max.sin());
+            let solid_angle = 2.0 * std::f64::consts::PI * (1.0 - (theta_max as f64).cos());
+            assert!((cone.solid_angle() as f64 / solid_angle - 1.0).abs() < 1e-4);
+            for i in 0..256 {
+                let u = Vec2::new((i % 16) as f32 / 16.0 + 0.01, (i / 16) as f32 / 16.0 + 0.02);
+                let w = cone.sample(u);
+                // Within the half-angle (by its sine: acos loses the small angles).
+                assert!(w.dot(axis) > 0.0);
+                assert!(w.cross(axis).length() <= theta_max.sin() * (1.0 + 1e-3) + 1e-6);
+                assert!((cone.pdf(w) as f64 * solid_angle - 1.0).abs() < 1e-3);
+            }
+            // Just outside, and on the other side: not in the cone.
+            let outside = Frame::from_z(axis).to_world(Vec3::new(
+                (theta_max * 1.01).sin(),
+                0.0,
+                (theta_max * 1.01).cos(),
+            ));
+            assert_eq!(cone.pdf(outside), 0.0);
+            assert_eq!(cone.pdf(-axis), 0.0);
+        }
+    }
+}
