@@ -51,9 +51,11 @@ SCENES = {
     "CBbunny": ("CBbunny.dae", 5, None),
     "CBspheres_microfacet_al_ag": ("CBspheres_microfacet_al_ag.dae", 5, None),
     "bunny_unlit+studio": ("bunny_unlit.dae", 5, "studio.hdr"),
-    # Not in the list: checks on scenes no lever was tuned on.
+    # Not in the four: checks on scenes no lever was tuned on
+    # (`--only CBspheres teapot+studio`). CBempty is not among them: its
+    # emissive ceiling mesh glows besides its point light, which this
+    # project counts and the Mitsuba tool leaves out.
     "CBspheres": ("CBspheres.dae", 5, None),
-    "CBempty": ("CBempty.dae", 5, None),
     "teapot+studio": ("teapot.dae", 5, "studio.hdr"),
 }
 # The four scenes, run when --only is not given.

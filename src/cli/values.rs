@@ -125,9 +125,11 @@ impl From<RouletteArg> for Roulette {
 /// `--casters`: the command line's names of the [`CasterRule`]s.
 #[derive(clap::ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum CastersArg {
-    /// Diffuse surfaces sample towards the scene's smooth spheres too (the default).
+    /// Diffuse surfaces sample towards the scene's smooth spheres and the lights' images in the mirror-like ones too (the default).
     #[default]
     Auto,
+    /// Towards the smooth spheres, without the light images.
+    Spheres,
     /// Diffuse surfaces sample their BSDF alone (the course's).
     Off,
 }
@@ -136,6 +138,7 @@ impl From<CastersArg> for CasterRule {
     fn from(arg: CastersArg) -> Self {
         match arg {
             CastersArg::Auto => CasterRule::Auto,
+            CastersArg::Spheres => CasterRule::Spheres,
             CastersArg::Off => CasterRule::Off,
         }
     }

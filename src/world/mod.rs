@@ -126,7 +126,7 @@ impl<'a, I: Intersector> World<'a, I> {
         }
         let c = casters::CASTER_PROBABILITY;
         let (mut sample, wi_world, bsdf_pdf) = if u.x < c {
-            let wi_world = cones.sample(Vec2::new(u.x / c, u.y));
+            let wi_world = cones.sample(Vec2::new(u.x / c, u.y), &self.casters)?;
             let wi = point.frame.to_local(wi_world);
             // Only diffuse BSDFs mix in cones (`caster_cones`), and they
             // reflect only: a cone direction below the surface carries
@@ -141,7 +141,7 @@ impl<'a, I: Intersector> World<'a, I> {
             let sample = point.bsdf.sample(point.wo, uc, Vec2::new(stretched, u.y))?;
             (sample, point.frame.to_world(sample.wi), sample.pdf())
         };
-        sample.density = Density::SolidAngle(cones.mixture_pdf(bsdf_pdf, wi_world));
+        sample.density = Density::SolidAngle(cones.mixture_pdf(bsdf_pdf, wi_world, &self.casters));
         Some(sample)
     }
 
@@ -152,7 +152,7 @@ impl<'a, I: Intersector> World<'a, I> {
         if point.cones.is_empty() {
             bsdf_pdf
         } else {
-            point.cones.mixture_pdf(bsdf_pdf, wi_world)
+            point.cones.mixture_pdf(bsdf_pdf, wi_world, &self.casters)
         }
     }
 

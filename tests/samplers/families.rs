@@ -263,7 +263,9 @@ fn environment_families() -> Vec<Family> {
 /// each (`World::sample_continuation`, `World::continuation_pdf`). The
 /// family's 2D number chooses the branch and the cone and draws the
 /// direction; the 1D number (the BSDF's lobe, unused by a diffuse one)
-/// comes from its own fixed stream.
+/// comes from its own fixed stream. It is lossy: an image's sample
+/// outside its sphere's cone is refused (`Cones`), so the density is
+/// that of the kept draws, and integrates to the kept fraction.
 fn continuation_family() -> Family {
     let mut b = SceneBuilder::new();
     let floor = b.material(diffuse(0.7));
@@ -324,7 +326,7 @@ fn continuation_family() -> Family {
         }),
         frame: point.frame,
         cos_min: 0.0,
-        lossy: false,
+        lossy: true,
     }
 }
 

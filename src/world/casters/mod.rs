@@ -85,9 +85,13 @@ pub const MAX_CONES: usize = MAX_CASTERS + 4;
 /// Whether a render samples towards caustic casters (`--casters`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum CasterRule {
-    /// The scene's smooth spheres, up to [`MAX_CASTERS`].
+    /// The scene's smooth spheres, up to [`MAX_CASTERS`], and the light
+    /// images in the mirror-like ones.
     #[default]
     Auto,
+    /// The smooth spheres' cones, without light images: what the images
+    /// add is the difference from [`CasterRule::Auto`].
+    Spheres,
     /// None: the BSDF alone (the course's path tracer).
     Off,
 }
@@ -102,18 +106,42 @@ pub struct Caster {
     pub image_spread: Option<f32>,
 }
 
+/// One component of the casters' mixture at a vertex.
+#[derive(Clone, Copy, Debug)]
+enum Member {
+    /// A caster's cone.
+    Sphere(Cone),
+    /// The image of light `light` in caster `caster`, whose own cone is
+    /// member `sphere`: found only where it is needed ([`Cones::image`]).
+    Image { sphere: u8, caster: u8, light: u8 },
+}
+
 /// The cones of the casters eligible at one vertex.
+///
+/// A light image's cone costs more to find than a sphere's (a few
+/// fixed-point steps), and most vertices never need it: it matters only
+/// for a continuation drawn from it, or a direction whose density is
+/// asked for inside its caster's cone. So it is found then, and its
+/// component is restricted to the caster's cone: a sample of the image's
+/// cone outside the caster's cone is refused (the path ends there), and
+/// the density of a direction outside the caster's cone has no image
+/// term. Both sides apply the same restriction, so they agree. Where a
+/// vertex has no image ([`images::image_cone`] gives none) the component
+/// is the caster's cone itself.
 #[derive(Clone, Copy, Debug)]
 pub struct Cones {
-    cones: [Cone; MAX_CONES],
+    members: [Member; MAX_CONES],
     count: usize,
+    /// The vertex.
+    p: Vec3,
 }
 
 impl Cones {
     /// No cone: the continuation is the BSDF's.
     pub const NONE: Cones = Cones {
-        cones: [Cone::EMPTY; MAX_CONES],
+        members: [Member::Sphere(Cone::EMPTY); MAX_CONES],
         count: 0,
+        p: Vec3::ZERO,
     };
 
     pub fn len(&self) -> usize {
@@ -124,39 +152,86 @@ impl Cones {
         self.count == 0
     }
 
-    /// Adds `cone`, unless there are [`MAX_CONES`] already.
-    fn push(&mut self, cone: Cone) {
+    /// Adds `member`, unless there are [`MAX_CONES`] already.
+    fn push(&mut self, member: Member) {
         if self.count < MAX_CONES {
-            self.cones[self.count] = cone;
+            self.members[self.count] = member;
             self.count += 1;
         }
+    }
+
+    /// The cone of member `j`, a caster's.
+    fn sphere(&self, j: u8) -> Cone {
+        match self.members[j as usize] {
+            Member::Sphere(cone) => cone,
+            Member::Image { .. } => unreachable!("an image's caster is a sphere member"),
+        }
+    }
+
+    /// The cone of an image member: the image's, or where the vertex has
+    /// none, its caster's.
+    fn image(&self, casters: &Casters, sphere: u8, caster: u8, light: u8) -> Cone {
+        let caster = &casters.spheres[caster as usize];
+        let light = &casters.lights[light as usize];
+        caster
+            .image_spread
+            .and_then(|spread| images::image_cone(self.p, caster, light, spread))
+            .unwrap_or_else(|| self.sphere(sphere))
     }
 
     /// A direction (world space) from cone `j = min(floor(u.x k), k - 1)`,
     /// with `u.x` stretched back to `[0, 1)` within the cone's share,
     /// `(u.x k - j, u.y)`, choosing the direction: so the directions of
     /// each cone are a stratified set when the 2D points `u` are, as they
-    /// would not be if a separate number chose the cone. Panics if there
-    /// is no cone.
-    pub fn sample(&self, u: Vec2) -> Vec3 {
+    /// would not be if a separate number chose the cone. `None` for an
+    /// image's direction outside its caster's cone. Panics if there is
+    /// no cone.
+    pub fn sample(&self, u: Vec2, casters: &Casters) -> Option<Vec3> {
         let scaled = u.x * self.count as f32;
         let pick = (scaled as usize).min(self.count - 1);
-        let stretched = (scaled - pick as f32).min(ONE_BELOW_ONE);
-        self.cones[..self.count][pick].sample(Vec2::new(stretched, u.y))
+        let u = Vec2::new((scaled - pick as f32).min(ONE_BELOW_ONE), u.y);
+        match self.members[pick] {
+            Member::Sphere(cone) => Some(cone.sample(u)),
+            Member::Image {
+                sphere,
+                caster,
+                light,
+            } => {
+                let w = self.image(casters, sphere, caster, light).sample(u);
+                (self.sphere(sphere).pdf(w) > 0.0).then_some(w)
+            }
+        }
     }
 
     /// The continuation's density for the unit direction `w` (world
     /// space): `(1 - c) bsdf_pdf + c pdf(w)`.
-    pub fn mixture_pdf(&self, bsdf_pdf: f32, w: Vec3) -> f32 {
-        (1.0 - CASTER_PROBABILITY) * bsdf_pdf + CASTER_PROBABILITY * self.pdf(w)
+    pub fn mixture_pdf(&self, bsdf_pdf: f32, w: Vec3, casters: &Casters) -> f32 {
+        (1.0 - CASTER_PROBABILITY) * bsdf_pdf + CASTER_PROBABILITY * self.pdf(w, casters)
     }
 
     /// The mixture of the cones' densities, each with weight `1 / k`.
-    pub fn pdf(&self, w: Vec3) -> f32 {
+    pub fn pdf(&self, w: Vec3, casters: &Casters) -> f32 {
         if self.count == 0 {
             return 0.0;
         }
-        let sum: f32 = self.cones[..self.count].iter().map(|c| c.pdf(w)).sum();
+        let members = &self.members[..self.count];
+        let sum: f32 = members
+            .iter()
+            .map(|member| match *member {
+                Member::Sphere(cone) => cone.pdf(w),
+                Member::Image {
+                    sphere,
+                    caster,
+                    light,
+                } => {
+                    if self.sphere(sphere).pdf(w) > 0.0 {
+                        self.image(casters, sphere, caster, light).pdf(w)
+                    } else {
+                        0.0
+                    }
+                }
+            })
+            .sum();
         sum / self.count as f32
     }
 }
@@ -203,7 +278,7 @@ impl Casters {
         let mirrors = spheres.iter().any(|s| s.image_spread.is_some());
         Casters {
             spheres,
-            lights: if mirrors {
+            lights: if mirrors && rule == CasterRule::Auto {
                 ImagedLight::of(lights)
             } else {
                 Vec::new()
@@ -226,8 +301,8 @@ impl Casters {
     /// the unit normal `n` on the side the continuation leaves: `p` is
     /// outside the sphere and the sphere reaches above the plane.
     pub fn cones(&self, p: Vec3, n: Vec3) -> Cones {
-        let mut cones = Cones::NONE;
-        for caster in &self.spheres {
+        let mut cones = Cones { p, ..Cones::NONE };
+        for (i, caster) in self.spheres.iter().enumerate() {
             let to_center = caster.center - p;
             let d2 = to_center.length_squared();
             let r2 = caster.radius * caster.radius;
@@ -236,13 +311,15 @@ impl Casters {
             if d2 <= r2 * 1.0001 || to_center.dot(n) <= -caster.radius {
                 continue;
             }
-            cones.push(Cone::of_sphere(to_center, d2, r2));
-            let Some(spread) = caster.image_spread else {
-                continue;
-            };
-            for light in &self.lights {
-                if let Some(image) = images::image_cone(p, caster, light, spread) {
-                    cones.push(image);
+            let sphere = cones.count as u8;
+            cones.push(Member::Sphere(Cone::of_sphere(to_center, d2, r2)));
+            if caster.image_spread.is_some() {
+                for light in 0..self.lights.len() {
+                    cones.push(Member::Image {
+                        sphere,
+                        caster: i as u8,
+                        light: light as u8,
+                    });
                 }
             }
         }
@@ -285,16 +362,16 @@ mod tests {
         let solid_angle = 2.0 * std::f32::consts::PI * (1.0 - (1.0 - (radius / d).powi(2)).sqrt());
         for i in 0..64 {
             let u = Vec2::new((i % 8) as f32 / 8.0 + 0.06, (i / 8) as f32 / 8.0 + 0.03);
-            let w = cones.sample(u);
+            let w = cones.sample(u, &casters).unwrap();
             assert!((w.length() - 1.0).abs() < 1e-5);
             // The ray from the origin along w meets the sphere.
             let b = w.dot(center);
             let disc = b * b - (center.length_squared() - radius * radius);
             assert!(disc >= -1e-5, "sample {i} misses the sphere: {disc}");
-            assert!((cones.pdf(w) * solid_angle - 1.0).abs() < 1e-3);
+            assert!((cones.pdf(w, &casters) * solid_angle - 1.0).abs() < 1e-3);
         }
         // Away from the sphere the density is zero.
-        assert_eq!(cones.pdf(-Vec3::Y), 0.0);
+        assert_eq!(cones.pdf(-Vec3::Y, &casters), 0.0);
     }
 
     #[test]
@@ -304,15 +381,16 @@ mod tests {
         let p = Vec3::new(137.0, 0.0, -52.0);
         for (d, radius) in [(10.0, 0.01), (30.0, 0.01), (100.0, 0.01)] {
             let center = p + Vec3::new(0.3, 1.0, -0.2).normalize() * d;
-            let cones = one(center, radius).cones(p, Vec3::Y);
+            let casters = one(center, radius);
+            let cones = casters.cones(p, Vec3::Y);
             let solid_angle = 2.0 * std::f64::consts::PI * (radius as f64 / d as f64).powi(2) / 2.0;
             for i in 0..4096 {
                 let u = Vec2::new(
                     (i % 64) as f32 / 64.0 + 0.007,
                     (i / 64) as f32 / 64.0 + 0.003,
                 );
-                let w = cones.sample(u);
-                let pdf = cones.pdf(w) as f64;
+                let w = cones.sample(u, &casters).unwrap();
+                let pdf = cones.pdf(w, &casters) as f64;
                 assert!(
                     (pdf * solid_angle - 1.0).abs() < 1e-2,
                     "d {d}: sample {i} has density {pdf}, expected {}",
@@ -323,7 +401,7 @@ mod tests {
     }
 
     #[test]
-    fn only_smooth_spheres_cast_and_the_rule_can_turn_them_off() {
+    fn only_smooth_spheres_cast_mirror_like_ones_show_lights_and_the_rule_decides() {
         use crate::scene::Sphere;
         let rgb = crate::math::Rgb::ONE;
         let materials = vec![
@@ -350,12 +428,24 @@ mod tests {
         let scene = Scene {
             materials,
             spheres,
+            lights: vec![crate::scene::Light::Area {
+                radiance: rgb,
+                center: Vec3::new(0.0, 2.0, 0.0),
+                direction: Vec3::NEG_Y,
+                dim_x: Vec3::X,
+                dim_y: Vec3::Z,
+            }],
             ..Scene::default()
         };
         let lights = LightSet::new(&scene, Default::default());
         let casters = Casters::new(&scene, &lights, CasterRule::Auto);
         let centers: Vec<f32> = casters.spheres.iter().map(|c| c.center.x).collect();
         assert_eq!(centers, vec![1.0, 3.0]);
+        // Both the mirror and the conductor with alpha 0.025 show the light.
+        assert_eq!(casters.images(), 2);
         assert!(Casters::new(&scene, &lights, CasterRule::Off).is_empty());
+        let spheres = Casters::new(&scene, &lights, CasterRule::Spheres);
+        assert_eq!(spheres.spheres, casters.spheres);
+        assert_eq!(spheres.images(), 0);
     }
 }
