@@ -111,9 +111,11 @@ impl<'a, I: Intersector> World<'a, I> {
     /// to `[0, 1)` within the branch taken (and within the cone taken,
     /// [`casters::Cones::sample`]): so each branch's directions keep the
     /// stratification of the sampler's 2D points, as a separate uniform
-    /// number for the choice would not. The
-    /// sample's density is the mixture's ([`World::continuation_pdf`]),
-    /// so its weight `f |cos| / p` is the path's.
+    /// number for the choice would not. The sample's density is the
+    /// mixture's ([`World::continuation_pdf`]), so its weight
+    /// `f |cos| / p` is the path's. `None` where the path ends: the BSDF
+    /// gives no sample, or a cone's direction is refused (below the
+    /// surface, or a light image's outside its sphere's cone).
     pub fn sample_continuation(
         &self,
         point: &ShadingPoint,
