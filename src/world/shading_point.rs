@@ -32,6 +32,7 @@ pub struct ShadingPoint {
     /// The cones of the caustic casters the continuation mixes in at this
     /// point ([`super::casters`]), found once for the continuation and the
     /// light samples' weights; none unless [`World::shade`](super::World::shade)
+    /// or [`World::add_caster_cones`](super::World::add_caster_cones)
     /// finds some.
     pub cones: Cones,
 }

@@ -13,9 +13,14 @@ use crate::math::float::ONE_BELOW_ONE;
 enum Member {
     /// A caster's cone.
     Sphere(Cone),
-    /// The image of light `light` in caster `caster`, whose own cone is
-    /// member `sphere`: found only where it is needed ([`Cones::image`]).
-    Image { sphere: u8, caster: u8, light: u8 },
+    /// The image of light `light` in caster `caster` (indices into
+    /// [`Casters`]), whose own cone is member `sphere_member`: found only
+    /// where it is needed ([`Cones::image`]).
+    Image {
+        sphere_member: u8,
+        caster: u8,
+        light: u8,
+    },
 }
 
 /// The cones of the casters eligible at one vertex.
@@ -76,13 +81,15 @@ impl Cones {
     }
 
     /// Adds the image of light `light` in caster `caster`, whose cone is
-    /// member `sphere`, unless the list is full.
-    pub(super) fn push_image(&mut self, sphere: u8, caster: usize, light: usize) {
+    /// member `sphere_member`, unless the list is full.
+    /// Whether it was added (`false`: the list is full).
+    pub(super) fn push_image(&mut self, sphere_member: u8, caster: usize, light: usize) -> bool {
         self.push(Member::Image {
-            sphere,
+            sphere_member,
             caster: caster as u8,
             light: light as u8,
-        });
+        })
+        .is_some()
     }
 
     /// The cone of member `j`, a caster's.
@@ -95,13 +102,13 @@ impl Cones {
 
     /// The cone of an image member: the image's, or where the vertex has
     /// none, its caster's.
-    fn image(&self, casters: &Casters, sphere: u8, caster: u8, light: u8) -> Cone {
+    fn image(&self, casters: &Casters, sphere_member: u8, caster: u8, light: u8) -> Cone {
         let caster = &casters.spheres[caster as usize];
         let light = &casters.lights[light as usize];
         caster
             .image_spread
             .and_then(|spread| images::image_cone(self.p, caster, light, spread))
-            .unwrap_or_else(|| self.sphere(sphere))
+            .unwrap_or_else(|| self.sphere(sphere_member))
     }
 
     /// A direction (world space) from cone `j = min(floor(u.x k), k - 1)`,
@@ -118,12 +125,12 @@ impl Cones {
         match self.members[pick] {
             Member::Sphere(cone) => Some(cone.sample(u)),
             Member::Image {
-                sphere,
+                sphere_member,
                 caster,
                 light,
             } => {
-                let w = self.image(casters, sphere, caster, light).sample(u);
-                (self.sphere(sphere).pdf(w) > 0.0).then_some(w)
+                let w = self.image(casters, sphere_member, caster, light).sample(u);
+                (self.sphere(sphere_member).pdf(w) > 0.0).then_some(w)
             }
         }
     }
@@ -145,12 +152,12 @@ impl Cones {
             .map(|member| match *member {
                 Member::Sphere(cone) => cone.pdf(w),
                 Member::Image {
-                    sphere,
+                    sphere_member,
                     caster,
                     light,
                 } => {
-                    if self.sphere(sphere).pdf(w) > 0.0 {
-                        self.image(casters, sphere, caster, light).pdf(w)
+                    if self.sphere(sphere_member).pdf(w) > 0.0 {
+                        self.image(casters, sphere_member, caster, light).pdf(w)
                     } else {
                         0.0
                     }

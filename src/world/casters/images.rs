@@ -40,8 +40,9 @@
 //!
 //! with `rho` the radius of the disc around the light's centre that holds
 //! it, `b = |y - s|`, and `spread` the reflected lobe's width for a glossy
-//! conductor ([`IMAGE_LOBE`] `alpha`; 0 for a mirror). On a grid of 93
-//! points on the floor and walls of `CBspheres.dae`, this cone held every
+//! conductor ([`IMAGE_LOBE`] `alpha`; 0 for a mirror). On a grid of 96
+//! points on the floor and walls of `CBspheres.dae`, at the 93 where the
+//! iteration settled ([`SETTLED`]), this cone held every
 //! direction that reaches the light (counted by brute force, 2e5
 //! directions per point), and a direction uniform in it reached the light
 //! 8.7 times as often as one uniform in the sphere's cone (the median;
@@ -68,6 +69,13 @@ pub const ITERATIONS: usize = 2;
 /// above, `3e-2` after two steps gave a cone at 93 of the 96 points, all
 /// that are more than a few per cent of a radius from the sphere.
 pub const SETTLED: f32 = 3e-2;
+
+/// The narrowest image cone, by the sine of its half-angle: a narrower one
+/// (a tiny light, or a tiny sphere far away) would be thinner than the
+/// rounding of its own samples' directions (about `1e-7` in the sine) times
+/// [`super::cone`]'s edge margin allows, so some of its samples would be
+/// scored outside it; such a vertex has the sphere's cone instead.
+pub const MIN_IMAGE_SINE: f32 = 1e-2;
 
 /// The largest Beckmann roughness of a conductor sphere that gets light
 /// images: past it the reflected lobe is as wide as the sphere's cone.
@@ -142,7 +150,8 @@ pub fn reflection_normal(x: Vec3, y: Vec3, c: Vec3, r: f32) -> Option<Vec3> {
 /// The cone, from `x`, around the image of `light` in `caster`, whose
 /// reflection widens the light by the angle `spread`; `None` where there
 /// is no image ([`reflection_normal`], or the light faces away from the
-/// reflection point) or the cone would be no narrower than the sphere's.
+/// reflection point), or the cone would be no narrower than the sphere's
+/// or narrower than [`MIN_IMAGE_SINE`].
 ///
 /// Sines stand for the angles of the module's formula (`sin(atan(rho /
 /// b)) = rho / sqrt(rho^2 + b^2)`, and `sin(phi)` from `sin(alpha)`), so
@@ -166,7 +175,8 @@ pub fn image_cone(x: Vec3, caster: &Caster, light: &ImagedLight, spread: f32) ->
     let sin_phi = sin_alpha / (1.0 + 2.0 * a * cos_i / r);
     // The sphere's own cone: sin^2(theta) = r^2 / |c - x|^2.
     let sin2_sphere = r * r / (c - x).length_squared();
-    (sin_phi > 0.0 && sin_phi * sin_phi < sin2_sphere).then(|| Cone::around(to_s / a, sin_phi))
+    (sin_phi >= MIN_IMAGE_SINE && sin_phi * sin_phi < sin2_sphere)
+        .then(|| Cone::around(to_s / a, sin_phi))
 }
 
 #[cfg(test)]

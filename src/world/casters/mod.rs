@@ -44,8 +44,16 @@
 //! A mirror sphere (or a conductor up to [`images::IMAGE_ALPHA`]) adds,
 //! for each rectangle light, a narrower cone around the light's image in
 //! it ([`images`]): the directions whose reflection reaches the light,
-//! a small part of the sphere's cone. It is one more cone `j` of the sum
-//! above, found per vertex like the sphere's.
+//! a small part of the sphere's cone. It is one more term of the sum,
+//! uniform in the image's cone but restricted to its sphere's cone
+//! `cone_s` (so that it need only be found for directions there:
+//! [`Cones`]), a sub-density:
+//!
+//! ```text
+//! p_image(wi) = [wi in image and in cone_s] / (2 pi (1 - cos phi))
+//! ```
+//!
+//! or, where the vertex has no image, the sphere's own cone again.
 
 pub mod cone;
 pub mod cones;
@@ -79,8 +87,8 @@ pub const SMOOTH_ALPHA: f32 = 0.3;
 /// More casters than this and none are used.
 pub const MAX_CASTERS: usize = 8;
 
-/// The most cones a vertex mixes: its casters' and up to four light
-/// images (more are left out).
+/// The most cones a vertex mixes: its casters', then light images in the
+/// slots left (at least four; more are left out).
 pub const MAX_CONES: usize = MAX_CASTERS + 4;
 
 /// Whether a render samples towards caustic casters (`--casters`).
@@ -173,7 +181,10 @@ impl Casters {
     /// outside the sphere and the sphere reaches above the plane.
     pub fn cones(&self, p: Vec3, n: Vec3) -> Cones {
         let mut cones = Cones::at(p);
-        for (i, caster) in self.spheres.iter().enumerate() {
+        // Each eligible caster's cone first, then the light images in the
+        // slots left, so that images never take a caster's place.
+        let mut members = [None; MAX_CASTERS];
+        for (caster, member) in self.spheres.iter().zip(&mut members) {
             let to_center = caster.center - p;
             let d2 = to_center.length_squared();
             let r2 = caster.radius * caster.radius;
@@ -182,12 +193,14 @@ impl Casters {
             if d2 <= r2 * 1.0001 || to_center.dot(n) <= -caster.radius {
                 continue;
             }
-            let Some(sphere) = cones.push_sphere(Cone::of_sphere(to_center, d2, r2)) else {
-                break;
-            };
-            if caster.image_spread.is_some() {
-                for light in 0..self.lights.len().min(MAX_CONES) {
-                    cones.push_image(sphere, i, light);
+            *member = cones.push_sphere(Cone::of_sphere(to_center, d2, r2));
+        }
+        for (i, (caster, member)) in self.spheres.iter().zip(members).enumerate() {
+            if let (Some(member), Some(_)) = (member, caster.image_spread) {
+                for light in 0..self.lights.len() {
+                    if !cones.push_image(member, i, light) {
+                        return cones;
+                    }
                 }
             }
         }
@@ -219,6 +232,64 @@ mod tests {
         assert_eq!(casters.cones(Vec3::new(0.0, -2.5, 2.0), Vec3::Y).len(), 1);
         // Inside the sphere.
         assert!(casters.cones(Vec3::new(0.0, -3.2, 0.0), Vec3::Y).is_empty());
+    }
+
+    fn mirror(center: Vec3, radius: f32) -> Caster {
+        Caster {
+            center,
+            radius,
+            image_spread: Some(0.0),
+        }
+    }
+
+    fn light(center: Vec3, normal: Vec3) -> ImagedLight {
+        ImagedLight {
+            center,
+            normal,
+            radius: 0.5,
+        }
+    }
+
+    #[test]
+    fn an_image_that_a_vertex_does_not_have_is_its_spheres_cone() {
+        // The light above the sphere faces up, away from it: no image.
+        let center = Vec3::new(0.5, 1.0, 0.0);
+        let casters = Casters {
+            spheres: vec![mirror(center, 0.3)],
+            lights: vec![light(Vec3::new(0.0, 3.0, 0.0), Vec3::Y)],
+        };
+        let cones = casters.cones(Vec3::ZERO, Vec3::Y);
+        assert_eq!(cones.len(), 2);
+        let d2 = center.length_squared();
+        let sphere = Cone::of_sphere(center, d2, 0.09);
+        for i in 0..256 {
+            let u = Vec2::new((i % 16) as f32 / 16.0 + 0.01, (i / 16) as f32 / 16.0 + 0.02);
+            let w = cones.sample(u, &casters).expect("a sphere-cone sample");
+            assert_eq!(cones.pdf(w, &casters), sphere.pdf(w));
+        }
+    }
+
+    #[test]
+    fn light_images_never_take_a_casters_place() {
+        // Eight mirrors and two lights: eight cones and four images fit.
+        let spheres = (0..MAX_CASTERS)
+            .map(|i| mirror(Vec3::new(i as f32 - 3.5, 1.0, -2.0), 0.2))
+            .collect();
+        let lights = vec![
+            light(Vec3::new(0.0, 3.0, 0.0), Vec3::NEG_Y),
+            light(Vec3::new(1.0, 3.0, 1.0), Vec3::NEG_Y),
+        ];
+        let casters = Casters { spheres, lights };
+        let cones = casters.cones(Vec3::ZERO, Vec3::Y);
+        assert_eq!(cones.len(), MAX_CONES);
+        for caster in &casters.spheres {
+            let w = caster.center.normalize();
+            assert!(
+                cones.pdf(w, &casters) > 0.0,
+                "no cone towards {}",
+                caster.center
+            );
+        }
     }
 
     #[test]
