@@ -100,8 +100,15 @@ impl<'a, I: Intersector> World<'a, I> {
 
     /// Fills in the cones of the casters that `point`'s continuation
     /// mixes in ([`World::sample_continuation`]).
+    ///
+    /// Only a diffuse BSDF mixes in cones, one that reflects only:
+    /// [`World::sample_continuation`] relies on it. Elsewhere the point
+    /// keeps [`casters::Cones::NONE`], untouched (the list is a few
+    /// hundred bytes, and every vertex of every scene comes here).
     pub fn add_caster_cones(&self, point: &mut ShadingPoint) {
-        point.cones = self.caster_cones(point);
+        if !self.casters.is_empty() && matches!(point.bsdf, Bsdf::Diffuse(_)) {
+            point.cones = self.casters.cones(point.hit.p, point.frame.z);
+        }
     }
 
     /// The direction a path takes from `point`, from `uc` and `u` in
@@ -130,7 +137,7 @@ impl<'a, I: Intersector> World<'a, I> {
         let (mut sample, wi_world, bsdf_pdf) = if u.x < c {
             let wi_world = cones.sample(Vec2::new(u.x / c, u.y), &self.casters)?;
             let wi = point.frame.to_local(wi_world);
-            // Only diffuse BSDFs mix in cones (`caster_cones`), and they
+            // Only diffuse BSDFs mix in cones (`add_caster_cones`), and they
             // reflect only: a cone direction below the surface carries
             // nothing (f = 0), and ends the path; so does a NaN one.
             if wi.z <= 0.0 || wi.z.is_nan() {
@@ -156,15 +163,5 @@ impl<'a, I: Intersector> World<'a, I> {
         } else {
             point.cones.mixture_pdf(bsdf_pdf, wi_world, &self.casters)
         }
-    }
-
-    /// The cones of the casters eligible at `point` if its continuation
-    /// mixes them in, which only a diffuse BSDF does (one that reflects
-    /// only: [`World::sample_continuation`] relies on it).
-    fn caster_cones(&self, point: &ShadingPoint) -> casters::Cones {
-        if self.casters.is_empty() || !matches!(point.bsdf, Bsdf::Diffuse(_)) {
-            return casters::Cones::NONE;
-        }
-        self.casters.cones(point.hit.p, point.frame.z)
     }
 }
