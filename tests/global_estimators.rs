@@ -1,7 +1,8 @@
 //! Global illumination (several bounces) against closed forms and across
 //! estimators: the integrating sphere, a convex object in an emissive
 //! enclosure, Russian roulette on and off, hemisphere against light
-//! sampling in a closed box at depth 4, and caustic casters on and off.
+//! sampling in a closed box at depth 4 (caustic casters on and off:
+//! `tests/caustic_casters.rs`).
 //!
 //! Each test builds a small scene in code, traces one fixed ray many times
 //! with a fixed seed and compares the mean luminance (grey scenes, so any
@@ -20,14 +21,14 @@ use std::f64::consts::PI;
 
 use common::{
     accel, assert_mean_matches, assert_means_agree, diffuse, emission, estimate, ray_towards,
-    rect_light, tracer, tracer_with, SceneBuilder, ALPHA, HEMISPHERE, LIGHTS,
+    tracer, tracer_with, SceneBuilder, ALPHA, HEMISPHERE, LIGHTS,
 };
 use glam::{DVec3, Vec3};
 use pathtracer::global::{PathTracer, Roulette, THROUGHPUT_ROULETTE_AFTER};
 use pathtracer::intersect::Ray;
 use pathtracer::scene::builtin::cornell_box;
-use pathtracer::scene::{Light, Material};
-use pathtracer::world::{CasterRule, World, WorldOptions};
+use pathtracer::scene::Light;
+use pathtracer::world::World;
 
 /// The integrating sphere complements the textbook furnace of
 /// `tests/furnace.rs` (closed box, albedo `a`, emission `Le` everywhere,
@@ -249,171 +250,5 @@ fn russian_roulette_on_and_off_agree() {
                 alpha,
             );
         }
-    }
-}
-
-/// Caustic casters change the variance, not the mean: on a floor around
-/// a mirror sphere, a glass sphere and a smooth conductor lit from above
-/// by a rectangle light (the course's Cornell boxes' arrangement, without
-/// the walls), at two points where the spheres throw caustics, the path
-/// tracer with casters (a quarter of the diffuse continuations drawn
-/// towards the spheres) agrees with the one without, two-sample z-tests
-/// (depth 3, no roulette, MIS on); and it is less noisy there, which is
-/// what casters are for. The standard errors' ratio was 0.67 and 0.53
-/// when written, 0.54 and 0.45 once the mirror and the conductor showed
-/// the light's images too (`casters::images`); the bound, 0.85, leaves room for the noise of the error
-/// estimates themselves, which caustics make heavy-tailed (at 100,000
-/// samples a third point's ratio read 0.32, then 0.84, then 0.91 at a
-/// million), hence a million samples each. Checked by hand: weighting
-/// the continuation by the BSDF's density instead of the mixture's fails
-/// (the mean moves by 6.5 %, 38 standard errors). The cones' share of the
-/// density in the light samples' MIS weights is not exercised here: a
-/// light sample inside a cone is blocked by its sphere unless the light
-/// stands between the point and the sphere.
-#[test]
-fn caustic_casters_change_the_variance_not_the_mean() {
-    let mut b = SceneBuilder::new();
-    let floor = b.material(diffuse(0.6));
-    let mirror = b.material(Material::Mirror {
-        reflectance: Vec3::ONE,
-    });
-    let glass = b.material(Material::Glass {
-        reflectance: Vec3::ONE,
-        transmittance: Vec3::ONE,
-        roughness: 0.0,
-        ior: 1.5,
-    });
-    let smooth = b.material(Material::Microfacet {
-        alpha: 0.05,
-        eta: Vec3::new(0.2, 0.9, 1.1),
-        k: Vec3::new(3.9, 2.4, 2.2),
-    });
-    b.quad(
-        floor,
-        [
-            Vec3::new(-4.0, 0.0, -4.0),
-            Vec3::new(4.0, 0.0, -4.0),
-            Vec3::new(4.0, 0.0, 4.0),
-            Vec3::new(-4.0, 0.0, 4.0),
-        ],
-    )
-    .sphere(Vec3::new(-1.2, 0.4, 0.0), 0.4, mirror)
-    .sphere(Vec3::new(0.0, 0.4, -0.3), 0.4, glass)
-    .sphere(Vec3::new(1.2, 0.4, 0.0), 0.4, smooth)
-    .light(rect_light(
-        10.0,
-        Vec3::new(0.0, 2.0, 0.0),
-        -Vec3::Y,
-        0.8,
-        0.6,
-    ));
-    let scene = b.finish();
-    let bvh = accel(&scene);
-    let with = World::new(&scene, &bvh);
-    assert_eq!(with.casters.spheres.len(), 3);
-    let without = World::with_options(
-        &scene,
-        &bvh,
-        WorldOptions {
-            casters: CasterRule::Off,
-            ..WorldOptions::default()
-        },
-    );
-    let eye = Vec3::new(0.0, 1.5, 3.0);
-    // In front of the glass sphere, and beside the conductor.
-    let targets = [Vec3::new(0.0, 0.0, 0.6), Vec3::new(2.2, 0.0, 1.0)];
-    let alpha = ALPHA / targets.len() as f64;
-    for (k, target) in targets.into_iter().enumerate() {
-        let ray = ray_towards(eye, target);
-        let seed = 70 + 2 * k as u64;
-        let off = estimate(&without, &tracer(LIGHTS, 3, false), &ray, 1_000_000, seed);
-        let on = estimate(&with, &tracer(LIGHTS, 3, false), &ray, 1_000_000, seed + 1);
-        eprintln!(
-            "RATIO towards {target}: without casters {:.5} +- {:.5}, with {:.5} +- {:.5}: {:.3}",
-            off.mean,
-            off.se,
-            on.mean,
-            on.se,
-            on.se / off.se
-        );
-        assert_means_agree(
-            &format!("floor towards {target}, casters off and on"),
-            off,
-            on,
-            alpha,
-        );
-        assert!(
-            on.se < 0.85 * off.se,
-            "towards {target}: casters should lower the noise of caustics: \
-             standard error {:.5} with, {:.5} without",
-            on.se,
-            off.se
-        );
-    }
-}
-
-/// The cones' share in the light samples' MIS weights: a floor lit by a
-/// rectangle light with a mirror sphere above it, seen through the light
-/// (which is not geometry: rays cross it), so that the light samples in
-/// the sphere's cone reach the light unblocked and both strategies, light
-/// samples and the mixture's continuation, find the same light there.
-/// Direct light only (depth 1), casters off and on agree (two-sample
-/// z-tests at two points) only if both weights use the mixture's density.
-/// Checked by hand: weighting the light samples with the BSDF's density
-/// alone (`continuation_pdf` left out of `DirectLights`) fails.
-#[test]
-fn caustic_casters_keep_the_light_samples_weights_whole() {
-    let mut b = SceneBuilder::new();
-    let floor = b.material(diffuse(0.5));
-    let mirror = b.material(Material::Mirror {
-        reflectance: Vec3::ONE,
-    });
-    b.quad(
-        floor,
-        [
-            Vec3::new(-3.0, 0.0, -3.0),
-            Vec3::new(3.0, 0.0, -3.0),
-            Vec3::new(3.0, 0.0, 3.0),
-            Vec3::new(-3.0, 0.0, 3.0),
-        ],
-    )
-    .sphere(Vec3::new(0.0, 1.5, 0.0), 0.45, mirror)
-    .light(rect_light(
-        5.0,
-        Vec3::new(0.0, 1.0, 0.0),
-        -Vec3::Y,
-        1.2,
-        1.2,
-    ));
-    let scene = b.finish();
-    let bvh = accel(&scene);
-    let with = World::new(&scene, &bvh);
-    assert_eq!(with.casters.spheres.len(), 1);
-    let without = World::with_options(
-        &scene,
-        &bvh,
-        WorldOptions {
-            casters: CasterRule::Off,
-            ..WorldOptions::default()
-        },
-    );
-    let eye = Vec3::new(0.0, 0.5, 1.8);
-    let targets = [Vec3::new(0.0, 0.0, 0.2), Vec3::new(0.4, 0.0, -0.3)];
-    let alpha = ALPHA / targets.len() as f64;
-    for (k, target) in targets.into_iter().enumerate() {
-        let ray = ray_towards(eye, target);
-        let seed = 90 + 2 * k as u64;
-        let off = estimate(&without, &tracer(LIGHTS, 1, false), &ray, 200_000, seed);
-        let on = estimate(&with, &tracer(LIGHTS, 1, false), &ray, 200_000, seed + 1);
-        eprintln!(
-            "LIGHT WEIGHTS towards {target}: without casters {:.5} +- {:.5}, with {:.5} +- {:.5}",
-            off.mean, off.se, on.mean, on.se
-        );
-        assert_means_agree(
-            &format!("floor under a light towards {target}, casters off and on"),
-            off,
-            on,
-            alpha,
-        );
     }
 }
