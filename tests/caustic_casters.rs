@@ -13,11 +13,11 @@
 mod common;
 
 use common::{
-    accel, assert_means_agree, diffuse, estimate, ray_towards, rect_light, tracer, SceneBuilder,
-    ALPHA, LIGHTS,
+    accel, assert_means_agree, diffuse, estimate, ray_towards, rect_light, tracer, MeanEstimate,
+    SceneBuilder, ALPHA, LIGHTS,
 };
 use glam::Vec3;
-use pathtracer::scene::Material;
+use pathtracer::scene::{Material, Scene};
 use pathtracer::world::{CasterRule, World, WorldOptions};
 
 /// Caustic casters change the variance, not the mean: on a floor around
@@ -28,7 +28,7 @@ use pathtracer::world::{CasterRule, World, WorldOptions};
 /// towards the spheres) agrees with the one without, two-sample z-tests
 /// (depth 3, no roulette, MIS on); and it is less noisy there, which is
 /// what casters are for. The standard errors' ratio was 0.67 and 0.53
-/// when written, 0.54 and 0.45 once the mirror and the conductor showed
+/// when written, 0.53 and 0.45 once the mirror and the conductor showed
 /// the light's images too (`casters::images`); the bound, 0.85, leaves room for the noise of the error
 /// estimates themselves, which caustics make heavy-tailed (at 100,000
 /// samples a third point's ratio read 0.32, then 0.84, then 0.91 at a
@@ -56,60 +56,30 @@ fn caustic_casters_change_the_variance_not_the_mean() {
         eta: Vec3::new(0.2, 0.9, 1.1),
         k: Vec3::new(3.9, 2.4, 2.2),
     });
-    b.quad(
-        floor,
-        [
-            Vec3::new(-4.0, 0.0, -4.0),
-            Vec3::new(4.0, 0.0, -4.0),
-            Vec3::new(4.0, 0.0, 4.0),
-            Vec3::new(-4.0, 0.0, 4.0),
-        ],
-    )
-    .sphere(Vec3::new(-1.2, 0.4, 0.0), 0.4, mirror)
-    .sphere(Vec3::new(0.0, 0.4, -0.3), 0.4, glass)
-    .sphere(Vec3::new(1.2, 0.4, 0.0), 0.4, smooth)
-    .light(rect_light(
-        10.0,
-        Vec3::new(0.0, 2.0, 0.0),
-        -Vec3::Y,
-        0.8,
-        0.6,
-    ));
+    b.floor(floor, 4.0)
+        .sphere(Vec3::new(-1.2, 0.4, 0.0), 0.4, mirror)
+        .sphere(Vec3::new(0.0, 0.4, -0.3), 0.4, glass)
+        .sphere(Vec3::new(1.2, 0.4, 0.0), 0.4, smooth)
+        .light(rect_light(
+            10.0,
+            Vec3::new(0.0, 2.0, 0.0),
+            -Vec3::Y,
+            0.8,
+            0.6,
+        ));
     let scene = b.finish();
-    let bvh = accel(&scene);
-    let with = World::new(&scene, &bvh);
-    assert_eq!(with.casters.spheres.len(), 3);
-    let without = World::with_options(
-        &scene,
-        &bvh,
-        WorldOptions {
-            casters: CasterRule::Off,
-            ..WorldOptions::default()
-        },
-    );
-    let eye = Vec3::new(0.0, 1.5, 3.0);
     // In front of the glass sphere, and beside the conductor.
     let targets = [Vec3::new(0.0, 0.0, 0.6), Vec3::new(2.2, 0.0, 1.0)];
-    let alpha = ALPHA / targets.len() as f64;
-    for (k, target) in targets.into_iter().enumerate() {
-        let ray = ray_towards(eye, target);
-        let seed = 70 + 2 * k as u64;
-        let off = estimate(&without, &tracer(LIGHTS, 3, false), &ray, 1_000_000, seed);
-        let on = estimate(&with, &tracer(LIGHTS, 3, false), &ray, 1_000_000, seed + 1);
-        eprintln!(
-            "RATIO towards {target}: without casters {:.5} +- {:.5}, with {:.5} +- {:.5}: {:.3}",
-            off.mean,
-            off.se,
-            on.mean,
-            on.se,
-            on.se / off.se
-        );
-        assert_means_agree(
-            &format!("floor towards {target}, casters off and on"),
-            off,
-            on,
-            alpha,
-        );
+    let eye = Vec3::new(0.0, 1.5, 3.0);
+    let pairs = casters_off_and_on(
+        &scene,
+        3,
+        3,
+        (eye, &targets),
+        (1_000_000, 70),
+        "RATIO: floor",
+    );
+    for ((off, on), target) in pairs.into_iter().zip(targets) {
         assert!(
             on.se < 0.85 * off.se,
             "towards {target}: casters should lower the noise of caustics: \
@@ -136,52 +106,77 @@ fn caustic_casters_keep_the_light_samples_weights_whole() {
     let mirror = b.material(Material::Mirror {
         reflectance: Vec3::ONE,
     });
-    b.quad(
-        floor,
-        [
-            Vec3::new(-3.0, 0.0, -3.0),
-            Vec3::new(3.0, 0.0, -3.0),
-            Vec3::new(3.0, 0.0, 3.0),
-            Vec3::new(-3.0, 0.0, 3.0),
-        ],
-    )
-    .sphere(Vec3::new(0.0, 1.5, 0.0), 0.45, mirror)
-    .light(rect_light(
-        5.0,
-        Vec3::new(0.0, 1.0, 0.0),
-        -Vec3::Y,
-        1.2,
-        1.2,
-    ));
+    b.floor(floor, 3.0)
+        .sphere(Vec3::new(0.0, 1.5, 0.0), 0.45, mirror)
+        .light(rect_light(
+            5.0,
+            Vec3::new(0.0, 1.0, 0.0),
+            -Vec3::Y,
+            1.2,
+            1.2,
+        ));
     let scene = b.finish();
-    let bvh = accel(&scene);
-    let with = World::new(&scene, &bvh);
-    assert_eq!(with.casters.spheres.len(), 1);
-    let without = World::with_options(
+    let targets = [Vec3::new(0.0, 0.0, 0.2), Vec3::new(0.4, 0.0, -0.3)];
+    let eye = Vec3::new(0.0, 0.5, 1.8);
+    casters_off_and_on(
         &scene,
+        1,
+        1,
+        (eye, &targets),
+        (200_000, 90),
+        "LIGHT WEIGHTS: floor under a light",
+    );
+}
+
+/// The path tracer (light sampling with MIS, depth `depth`, no roulette)
+/// with and without casters on `scene`, `n` samples each along the ray
+/// from `eye` to each target, seeds from `seed`: their means agree by
+/// two-sample z-tests (`what` names the comparison). Returns the pairs
+/// (without, with) for further checks.
+fn casters_off_and_on(
+    scene: &Scene,
+    casters: usize,
+    depth: u32,
+    (eye, targets): (Vec3, &[Vec3]),
+    (n, seed): (usize, u64),
+    what: &str,
+) -> Vec<(MeanEstimate, MeanEstimate)> {
+    let bvh = accel(scene);
+    let with = World::new(scene, &bvh);
+    assert_eq!(with.casters.spheres.len(), casters);
+    let without = World::with_options(
+        scene,
         &bvh,
         WorldOptions {
             casters: CasterRule::Off,
             ..WorldOptions::default()
         },
     );
-    let eye = Vec3::new(0.0, 0.5, 1.8);
-    let targets = [Vec3::new(0.0, 0.0, 0.2), Vec3::new(0.4, 0.0, -0.3)];
     let alpha = ALPHA / targets.len() as f64;
-    for (k, target) in targets.into_iter().enumerate() {
-        let ray = ray_towards(eye, target);
-        let seed = 90 + 2 * k as u64;
-        let off = estimate(&without, &tracer(LIGHTS, 1, false), &ray, 200_000, seed);
-        let on = estimate(&with, &tracer(LIGHTS, 1, false), &ray, 200_000, seed + 1);
-        eprintln!(
-            "LIGHT WEIGHTS towards {target}: without casters {:.5} +- {:.5}, with {:.5} +- {:.5}",
-            off.mean, off.se, on.mean, on.se
-        );
-        assert_means_agree(
-            &format!("floor under a light towards {target}, casters off and on"),
-            off,
-            on,
-            alpha,
-        );
-    }
+    let tracer = tracer(LIGHTS, depth, false);
+    targets
+        .iter()
+        .enumerate()
+        .map(|(k, &target)| {
+            let ray = ray_towards(eye, target);
+            let seed = seed + 2 * k as u64;
+            let off = estimate(&without, &tracer, &ray, n, seed);
+            let on = estimate(&with, &tracer, &ray, n, seed + 1);
+            eprintln!(
+                "{what} towards {target}: without casters {:.5} +- {:.5}, with {:.5} +- {:.5}: {:.3}",
+                off.mean,
+                off.se,
+                on.mean,
+                on.se,
+                on.se / off.se
+            );
+            assert_means_agree(
+                &format!("{what} towards {target}, casters off and on"),
+                off,
+                on,
+                alpha,
+            );
+            (off, on)
+        })
+        .collect()
 }

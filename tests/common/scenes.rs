@@ -96,6 +96,19 @@ impl SceneBuilder {
         self
     }
 
+    /// The square floor `y = 0`, `|x|, |z| <= half`.
+    pub fn floor(&mut self, material: MaterialId, half: f32) -> &mut Self {
+        self.quad(
+            material,
+            [
+                Vec3::new(-half, 0.0, -half),
+                Vec3::new(half, 0.0, -half),
+                Vec3::new(half, 0.0, half),
+                Vec3::new(-half, 0.0, half),
+            ],
+        )
+    }
+
     /// The six faces of the axis-aligned box `[lo, hi]` (12 triangles).
     pub fn closed_box(&mut self, material: MaterialId, lo: Vec3, hi: Vec3) -> &mut Self {
         let c = |x: bool, y: bool, z: bool| {

@@ -277,24 +277,16 @@ fn continuation_family() -> Family {
         eta: Vec3::splat(0.2),
         k: Vec3::splat(3.0),
     });
-    b.quad(
-        floor,
-        [
-            Vec3::new(-3.0, 0.0, -3.0),
-            Vec3::new(3.0, 0.0, -3.0),
-            Vec3::new(3.0, 0.0, 3.0),
-            Vec3::new(-3.0, 0.0, 3.0),
-        ],
-    )
-    .sphere(Vec3::new(0.5, 0.6, 0.2), 0.3, mirror)
-    .sphere(Vec3::new(-0.8, 1.5, -0.4), 0.5, smooth)
-    .light(rect_light(
-        10.0,
-        Vec3::new(-0.3, 2.5, 0.6),
-        -Vec3::Y,
-        0.8,
-        0.6,
-    ));
+    b.floor(floor, 3.0)
+        .sphere(Vec3::new(0.5, 0.6, 0.2), 0.3, mirror)
+        .sphere(Vec3::new(-0.8, 1.5, -0.4), 0.5, smooth)
+        .light(rect_light(
+            10.0,
+            Vec3::new(-0.3, 2.5, 0.6),
+            -Vec3::Y,
+            0.8,
+            0.6,
+        ));
     // The world borrows the scene and its BVH for the family's lifetime.
     let scene: &'static Scene = Box::leak(Box::new(b.finish()));
     let bvh: &'static BvhAccel = Box::leak(Box::new(accel(scene)));
