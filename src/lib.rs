@@ -25,13 +25,16 @@
 //! scene calls for, and the integrator specialised to them), [`scene`] (scene model, the
 //! COLLADA loader, built-in scenes), [`render`] (film, tiles, threads,
 //! progress, PNG/EXR output), [`cli`] (the course's flags and what each
-//! binary does).
+//! binary does), [`course`] (the image a correct course solution renders:
+//! `--course-exact`), [`mistakes`] (a catalogue of students' mistakes,
+//! each renderable: `--mistake NAME`).
 //!
 //! Conventions are in `docs/00-conventions.md`.
 
 pub mod adaptive;
 pub mod bvh;
 pub mod cli;
+pub mod course;
 pub mod depth_of_field;
 pub mod direct;
 pub mod environment;
@@ -40,6 +43,7 @@ pub mod intersect;
 pub mod lights;
 pub mod materials;
 pub mod math;
+pub mod mistakes;
 pub mod plan;
 pub mod raygen;
 pub mod render;

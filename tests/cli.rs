@@ -227,3 +227,70 @@ fn info_names_the_sampler_and_the_roulette() {
         ("zsobol".into(), "fixed".into())
     );
 }
+
+/// `--course-exact` names its assignment and its adaptive sampling: 3-2
+/// (adaptive on by default) for `pathtracer`, 3-1 without part 5 for
+/// `part4-global`, whatever `=3-1` or `=3-2` says otherwise; `--mistake`
+/// implies it. It refuses the project's own estimator choices.
+#[test]
+fn course_exact_names_its_assignment_and_defaults() {
+    let part4 = env!("CARGO_BIN_EXE_part4-global");
+    let line = |binary: &str, flags: &[&str]| {
+        let mut args = vec!["--info"];
+        args.extend(flags);
+        let (ok, stdout, stderr) = run(binary, &args);
+        assert!(ok, "{stderr}");
+        stdout
+            .lines()
+            .find(|l| l.starts_with("course-exact: "))
+            .unwrap_or_else(|| panic!("no course-exact line in {stdout}"))
+            .to_string()
+    };
+    let full = line(PATHTRACER, &["--course-exact"]);
+    assert!(
+        full.contains("assignment 3-2") && full.contains("adaptive 32 0.05"),
+        "{full}"
+    );
+    let part4_line = line(part4, &["--course-exact"]);
+    assert!(
+        part4_line.contains("assignment 3-1") && part4_line.contains("adaptive off"),
+        "{part4_line}"
+    );
+    let named = line(PATHTRACER, &["--course-exact=3-1", "-a", "16", "0.1"]);
+    assert!(
+        named.contains("assignment 3-1") && named.contains("adaptive 16 0.1"),
+        "{named}"
+    );
+    let mistaken = line(part4, &["--mistake", "no-cosine", "--mistake", "no-pdf"]);
+    assert!(
+        mistaken.contains("mistakes: no-cosine, no-pdf"),
+        "{mistaken}"
+    );
+    assert!(line(part4, &["--course-exact"]).contains("mistakes: none"));
+    for conflicting in ["--no-mis", "--course", "--schlick"] {
+        let (ok, _, stderr) = run(PATHTRACER, &["--info", "--course-exact", conflicting]);
+        assert!(
+            !ok && stderr.contains("cannot be used with"),
+            "{conflicting}: {stderr}"
+        );
+    }
+}
+
+/// `--mistake list` prints the catalogue; an unknown name is refused with
+/// the catalogue's names.
+#[test]
+fn mistake_list_and_unknown_mistakes() {
+    let (ok, stdout, _) = run(PATHTRACER, &["--mistake", "list"]);
+    assert!(ok);
+    for m in pathtracer::mistakes::Mistake::ALL {
+        assert!(stdout.contains(m.info().name), "{m} missing from {stdout}");
+    }
+    let (ok, _, stderr) = run(PATHTRACER, &["--info", "--mistake", "no-such-thing"]);
+    assert!(!ok, "{stderr}");
+    assert!(
+        stderr.starts_with("error: --mistake no-such-thing: no such mistake")
+            && stderr.contains("no-cosine"),
+        "{stderr}"
+    );
+    assert!(!stderr.contains("panicked"), "{stderr}");
+}

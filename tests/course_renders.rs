@@ -49,6 +49,7 @@ fn course_scenes_render_without_nan_or_infinity() {
             bsdf: BsdfOptions {
                 fresnel: FresnelModel::Schlick,
                 microfacet: MicrofacetSampling::HalfVector,
+                ..BsdfOptions::default()
             },
             ..WorldOptions::default()
         };

@@ -126,6 +126,51 @@ fn a_mirror_shows_the_light_and_it_is_counted_once() {
     }
 }
 
+/// The course's intent for a lamp: its emissive quad is the lamp's visible
+/// face, its area light lights the room, whatever their radiances. A quad
+/// of radiance 6 on a light of radiance 3: the floor is lit by the light
+/// alone (`a / pi E_light`, Lambert's polygon formula) and a camera ray
+/// that meets the quad sees 6, under every strategy. Checked by hand:
+/// the earlier rule, which asked the quad for the light's radiance, made
+/// the quad a light of its own and the floor three times as bright (MIS
+/// off by hundreds of standard errors).
+#[test]
+fn a_brighter_quad_shows_the_lamp_and_its_light_lights_the_room() {
+    let (albedo, radiance) = (0.6f32, 3.0f32);
+    let light = rect_light(radiance, Vec3::new(-0.2, 1.0, 0.1), -Vec3::Y, 0.6, 0.4);
+    let mut scene = floor_light_mirror(albedo, light, true, None);
+    let quad = scene
+        .materials
+        .iter()
+        .position(|m| matches!(m, Material::Emission { .. }))
+        .expect("the quad's material");
+    scene.materials[quad] = Material::Emission {
+        radiance: Vec3::splat(2.0 * radiance),
+    };
+    let x = Vec3::new(0.3, 0.0, 0.0);
+    let corners = rect_corners(&light).map(|c| c.as_dvec3());
+    let e_light = polygon_irradiance(x.as_dvec3(), DVec3::Y, &corners, radiance as f64);
+    let expected = albedo as f64 / PI * e_light;
+    let to_floor = ray_towards(Vec3::new(-1.0, 1.5, 1.0), x);
+    let to_lamp = ray_towards(Vec3::new(0.3, 0.2, 0.0), Vec3::new(-0.2, 1.0, 0.1));
+    let bvh = accel(&scene);
+    let world = World::new(&scene, &bvh);
+    let alpha = ALPHA / 4.0;
+    for (k, (name, direct)) in strategies().into_iter().enumerate() {
+        let t = tracer(direct, 2, false);
+        let floor = estimate(&world, &t, &to_floor, 100_000, 71 + k as u64);
+        assert_mean_matches(&format!("floor, {name}"), floor, expected, alpha, 0.0);
+        let lamp = estimate(&world, &t, &to_lamp, 1_000, 81 + k as u64);
+        // The quad reflects nothing: the camera sees its emission alone.
+        assert!(
+            (lamp.mean - 2.0 * radiance as f64).abs() < 1e-4,
+            "lamp, {name}: the camera sees {:.4}, not the quad's {}",
+            lamp.mean,
+            2.0 * radiance
+        );
+    }
+}
+
 /// A glass sphere of index 1 and transmittance 1 (exact Fresnel reflects
 /// nothing at index 1) lets light through unchanged: the floor seen
 /// through it, and the floor in its shadow (lit only by paths through the

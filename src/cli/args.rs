@@ -11,7 +11,8 @@ use crate::depth_of_field::COURSE_FOCAL_DISTANCE;
 
 use super::values::{non_negative, positive};
 pub use super::values::{
-    AccelArg, Builtin, CastersArg, LightChoiceArg, MicrofacetSamplingArg, RouletteArg, SamplerArg,
+    AccelArg, AssignmentArg, Builtin, CastersArg, LightChoiceArg, MicrofacetSamplingArg,
+    RouletteArg, SamplerArg,
 };
 
 /// Largest accepted image side, pixels.
@@ -212,6 +213,28 @@ pub struct CourseArgs {
     /// --casters off`.
     #[arg(long, conflicts_with_all = ["sampler", "roulette", "casters"])]
     pub course: bool,
+
+    /// The image a correct course solution renders, starter code and
+    /// handout included (docs/14-course-image.md): the starter's
+    /// estimators, lights, Fresnel and microfacet formulas, random numbers
+    /// and roulette, adaptive sampling by default where part 5 is written,
+    /// truncated PNG values. `=3-1` or `=3-2` names the assignment; without
+    /// it, 3-1 for parts 1 to 5 and 3-2 for parts 6 to 8 and `pathtracer`.
+    #[arg(long, value_enum, value_name = "ASSIGNMENT", num_args = 0..=1,
+          require_equals = true,
+          conflicts_with_all = ["course", "sampler", "roulette", "casters", "bsdf_only",
+                                "no_mis", "course_lights", "schlick", "microfacet_sampling",
+                                "light_choice", "no_plan"])]
+    pub course_exact: Option<Option<AssignmentArg>>,
+
+    /// Make one of the catalogue's mistakes students make, to see what it
+    /// looks like (repeatable; implies --course-exact); `--mistake list`
+    /// prints the catalogue (docs/13-symptoms.md).
+    #[arg(long = "mistake", value_name = "NAME",
+          conflicts_with_all = ["course", "sampler", "roulette", "casters", "bsdf_only",
+                                "no_mis", "course_lights", "schlick", "microfacet_sampling",
+                                "light_choice", "no_plan"])]
+    pub mistakes: Vec<String>,
 }
 
 /// `part2-bvh`'s flags: the course's, plus the benchmarks.

@@ -6,10 +6,12 @@ use std::path::{Path, PathBuf};
 
 use super::args::*;
 use crate::adaptive::Adaptive;
+use crate::course::{Assignment, CourseExact};
 use crate::depth_of_field::ThinLens;
 use crate::global::Roulette;
 use crate::lights::LightConvention;
 use crate::materials::{BsdfOptions, FresnelModel};
+use crate::mistakes::{Mistake, Mistakes};
 use crate::render::RenderSettings;
 use crate::sampling::SamplerKind;
 use crate::scene::{Scene, SceneError};
@@ -118,6 +120,7 @@ impl CourseArgs {
                     FresnelModel::Exact
                 },
                 microfacet: self.microfacet_sampling.into(),
+                ..BsdfOptions::default()
             },
             light_choice: self.light_choice.into(),
             casters: if self.course {
@@ -126,6 +129,37 @@ impl CourseArgs {
                 self.casters.into()
             },
         }
+    }
+
+    /// The course's image settings when `--course-exact` is given: its
+    /// assignment, else `default` (the binary's).
+    /// `--mistake` alone implies it, with the binary's assignment.
+    pub fn course_exact(&self, default: Assignment) -> Option<CourseExact> {
+        let assignment = match self.course_exact {
+            Some(named) => named.map_or(default, Assignment::from),
+            None if !self.mistakes.is_empty() => default,
+            None => return None,
+        };
+        Some(CourseExact { assignment })
+    }
+
+    /// The mistakes `--mistake` names, or an error naming the unknown one
+    /// and listing the known ones.
+    pub fn mistake_set(&self) -> Result<Mistakes, String> {
+        self.mistakes.iter().try_fold(Mistakes::NONE, |set, name| {
+            Mistake::from_name(name).map(|m| set.with(m)).ok_or_else(|| {
+                let known: Vec<&str> = Mistake::ALL.iter().map(|m| m.info().name).collect();
+                format!(
+                    "--mistake {name}: no such mistake; the catalogue has {} (--mistake list explains each)",
+                    known.join(", ")
+                )
+            })
+        })
+    }
+
+    /// Whether the flags ask for the catalogue (`--mistake list`).
+    pub fn lists_mistakes(&self) -> bool {
+        self.mistakes.iter().any(|m| m == "list")
     }
 
     /// The sampler: `--sampler`, independent with `--course`.

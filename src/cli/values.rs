@@ -25,6 +25,26 @@ pub fn positive(s: &str) -> Result<f32, String> {
     }
 }
 
+/// `--course-exact=ASSIGNMENT`: which of the course's assignments.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AssignmentArg {
+    /// PathTracer 3-1 (parts 1 to 5), a student's own solution.
+    #[value(name = "3-1")]
+    PathTracer1,
+    /// PathTracer 3-2 (parts 6 to 8) on the staff's parts 1 to 5.
+    #[value(name = "3-2")]
+    PathTracer2,
+}
+
+impl From<AssignmentArg> for crate::course::Assignment {
+    fn from(arg: AssignmentArg) -> Self {
+        match arg {
+            AssignmentArg::PathTracer1 => crate::course::Assignment::PathTracer1,
+            AssignmentArg::PathTracer2 => crate::course::Assignment::PathTracer2,
+        }
+    }
+}
+
 /// `part2-bvh --accel`: which BVH the benchmark traces.
 #[derive(clap::ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum AccelArg {

@@ -161,7 +161,17 @@ pub fn found_emission<I: Intersector>(
             0.0
         };
         if t <= t_hit * (1.0 + 1e-3) + slack {
-            le += rect.radiance_at(t) * weight(sampled(i, None));
+            // The course's light weighting scales light samples by the
+            // distance; only the BSDF side of multiple importance sampling
+            // weighs against them, so only it takes the same factor. The
+            // camera, a delta bounce, `-H` and BSDF sampling alone see the
+            // light's radiance.
+            let radiance = if after_scattering && direct.mis() {
+                rect.radiance_at(t)
+            } else {
+                rect.radiance
+            };
+            le += radiance * weight(sampled(i, None));
         }
     }
     le

@@ -119,8 +119,12 @@ impl RectLight {
         }
     }
 
-    /// Radiance the light sends along a ray that meets it at distance `t`
-    /// (the course's convention scales it as it scales samples).
+    /// Radiance the light sends along a ray that meets it at distance `t`,
+    /// as the BSDF side of multiple importance sampling counts it against
+    /// light samples: the course's convention scales it as it scales
+    /// samples, so that MIS under `--course-lights` gives the course's
+    /// image (the camera, `-H` and BSDF sampling alone see
+    /// [`Self::radiance`]).
     pub fn radiance_at(&self, t: f32) -> Rgb {
         self.radiance * self.convention.area_factor(t)
     }

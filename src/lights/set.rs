@@ -6,11 +6,12 @@
 //! three roles ([`EmitterRole`]):
 //!
 //! - **stand-in**: the course's Cornell boxes hold an area light and, at the
-//!   same place, an emissive `light` mesh of the same radiance. The light
-//!   lights the scene; the mesh shows it to the camera and through delta
-//!   bounces (a mirror, glass), where light sampling cannot reach. A
-//!   material is a stand-in when it is emissive and every triangle using
-//!   it lies within reach of an area light of the same radiance: each
+//!   same place, an emissive `light` mesh. The light lights the scene; the
+//!   mesh, the lamp's visible face, shows it to the camera and through
+//!   delta bounces (a mirror, glass), where light sampling cannot reach,
+//!   with the mesh's own radiance whatever the light's. A material is a
+//!   stand-in when it is emissive and every triangle using it lies within
+//!   reach of an area light ([`super::stand_ins`]): each
 //!   vertex closer to the light's centre than the light's half-diagonal
 //!   plus 10 % of it, and within 1 % of that diagonal of its plane.
 //! - **sampled**: every other emissive triangle is a member of one more
@@ -275,15 +276,17 @@ mod tests {
     }
 
     #[test]
-    fn an_emitter_without_a_matching_light_is_sampled_as_one() {
+    fn an_emitter_without_a_light_is_sampled_as_one() {
         let mut scene = cornell_box();
-        // A different radiance, or no area light at all: the quad lights the scene itself.
+        // A different radiance: the quad still shows the lamp (the
+        // course's intent), and lights nothing itself.
         if let SceneLight::Area { radiance, .. } = &mut scene.lights[0] {
-            *radiance *= 2.0;
+            *radiance *= 0.5;
         }
         let stand_ins = StandIns::of(&scene);
-        assert!(stand_ins.materials.iter().all(|&p| !p));
-        assert_eq!(stand_ins.lights, vec![false]);
+        assert!(stand_ins.materials.iter().any(|&p| p));
+        assert_eq!(stand_ins.lights, vec![true]);
+        // No area light at all: the quad lights the scene itself.
         scene.lights.clear();
         assert!(StandIns::of(&scene).materials.iter().all(|&p| !p));
         let set = LightSet::new(&scene, LightConvention::Physical);

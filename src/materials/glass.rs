@@ -21,7 +21,7 @@
 use glam::Vec3;
 
 use super::specular::{reflect, refract};
-use super::{fresnel, BsdfSample, Density, FresnelModel};
+use super::{fresnel, BsdfSample, Density, EtaScaling, FresnelModel};
 use crate::math::Rgb;
 
 /// Fresnel-weighted specular reflection and refraction.
@@ -32,6 +32,8 @@ pub struct Glass {
     /// Index of the far side over the near side.
     pub eta: f32,
     pub fresnel: FresnelModel,
+    /// `1 / eta^2` on transmitted radiance, or the starter's `eta^2`.
+    pub eta_scaling: EtaScaling,
 }
 
 impl Glass {
@@ -52,7 +54,7 @@ impl Glass {
         let refracted = refract(wo, self.eta);
         match refracted {
             Some(wi) if uc >= f => Some(BsdfSample {
-                f: self.transmittance * (1.0 - f) / (self.eta * self.eta * wi.z.abs()),
+                f: self.transmittance * (1.0 - f) * self.eta_scaling.factor(self.eta) / wi.z.abs(),
                 wi,
                 density: Density::Delta(1.0 - f),
                 transmission: true,
@@ -78,6 +80,7 @@ mod tests {
 
     fn glass(eta: f32, fresnel: FresnelModel) -> Glass {
         Glass {
+            eta_scaling: EtaScaling::Physical,
             reflectance: Rgb::ONE,
             transmittance: Rgb::ONE,
             eta,

@@ -43,7 +43,7 @@
 use glam::{Vec2, Vec3};
 
 use super::beckmann::Beckmann;
-use super::{fresnel, BsdfSample, MicrofacetSampling};
+use super::{fresnel, BsdfSample, MicrofacetModel, MicrofacetSampling};
 use crate::math::warp::{cosine_hemisphere_pdf, sample_cosine_hemisphere};
 use crate::math::Rgb;
 
@@ -69,6 +69,8 @@ pub struct Conductor {
     /// Extinction coefficient, per channel.
     pub k: Rgb,
     pub sampling: MicrofacetSampling,
+    /// The formulas of `f`: physical, or the course starter's.
+    pub model: MicrofacetModel,
 }
 
 /// The normalised half vector `h` of two directions and `wo.h = wi.h`, or
@@ -91,7 +93,13 @@ impl Conductor {
             eta,
             k,
             sampling,
+            model: MicrofacetModel::Physical,
         }
+    }
+
+    /// The same conductor with `f` computed by `model`.
+    pub fn with_model(self, model: MicrofacetModel) -> Self {
+        Conductor { model, ..self }
     }
 
     /// The terms `f` and `pdf` share for two directions above the surface:
@@ -110,15 +118,28 @@ impl Conductor {
         })
     }
 
-    /// `F G D / (4 cos_o cos_i)` with `G = 1 / (1 + Lambda(wo) + Lambda(wi))`.
+    /// `F G D / (4 cos_o cos_i)` with `G = 1 / (1 + Lambda(wo) + Lambda(wi))`:
+    /// `F(wo.h)` and the exact `Lambda`, or with [`MicrofacetModel::Starter`]
+    /// the starter's `F(wi.z)` and `Lambda` ([`Beckmann::starter_lambda`]).
     fn value(&self, terms: &HalfTerms, wo: Vec3, wi: Vec3) -> Rgb {
-        let lambda_i = f64::from(self.distribution.lambda(wi));
+        let (lambda_o, lambda_i, cos_fresnel) = match self.model {
+            MicrofacetModel::Physical => (
+                terms.lambda_o,
+                f64::from(self.distribution.lambda(wi)),
+                terms.cos_h,
+            ),
+            MicrofacetModel::Starter => (
+                self.distribution.starter_lambda(wo),
+                self.distribution.starter_lambda(wi),
+                wi.z,
+            ),
+        };
         let scalar =
-            terms.d / ((1.0 + terms.lambda_o + lambda_i) * 4.0 * f64::from(wo.z) * f64::from(wi.z));
+            terms.d / ((1.0 + lambda_o + lambda_i) * 4.0 * f64::from(wo.z) * f64::from(wi.z));
         if !scalar.is_finite() {
             return Rgb::ZERO;
         }
-        fresnel::conductor(terms.cos_h, self.eta, self.k) * scalar as f32
+        fresnel::conductor(cos_fresnel, self.eta, self.k) * scalar as f32
     }
 
     /// The strategy used for `wo`: [`MicrofacetSampling::Auto`] resolved to
@@ -218,5 +239,42 @@ impl Conductor {
             return None;
         }
         BsdfSample::reflection(self.f(wo, wi), wi, pdf)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The starter's model differs from the physical one by its `Lambda`
+    /// and by where it takes the Fresnel term: `f_starter / f_physical =
+    /// F(wi.z) / F(wo.h) x (1 + Lo + Li) / (1 + Lo' + Li')`, with `D` the
+    /// same; checked on gold at three pairs of directions.
+    #[test]
+    fn the_starters_model_swaps_lambda_and_the_fresnel_angle() {
+        let (eta, k) = (Rgb::new(0.143, 0.375, 1.442), Rgb::new(3.983, 2.386, 1.603));
+        let physical = Conductor::new(0.4, eta, k, MicrofacetSampling::HalfVector);
+        let starter = physical.with_model(MicrofacetModel::Starter);
+        let b = physical.distribution;
+        for (wo, wi) in [
+            (Vec3::new(0.3, 0.1, 0.9), Vec3::new(-0.5, 0.2, 0.8)),
+            (Vec3::new(0.9, 0.0, 0.2), Vec3::new(-0.8, 0.1, 0.3)),
+            (Vec3::new(0.0, 0.6, 0.7), Vec3::new(0.1, -0.7, 0.6)),
+        ] {
+            let (wo, wi) = (wo.normalize(), wi.normalize());
+            let h = (wo + wi).normalize();
+            let g = |l: f64, m: f64| 1.0 / (1.0 + l + m);
+            let g_ratio = g(b.starter_lambda(wo), b.starter_lambda(wi))
+                / g(f64::from(b.lambda(wo)), f64::from(b.lambda(wi)));
+            let expected = fresnel::conductor(wi.z, eta, k) / fresnel::conductor(wo.dot(h), eta, k)
+                * g_ratio as f32;
+            let got = starter.f(wo, wi) / physical.f(wo, wi);
+            assert!(
+                (got - expected).abs().max_element() < 1e-4,
+                "{got} vs {expected}"
+            );
+            // The sampler is the same: so is the density.
+            assert_eq!(starter.pdf(wo, wi), physical.pdf(wo, wi));
+        }
     }
 }

@@ -138,11 +138,56 @@ pub enum MicrofacetSampling {
     Auto,
 }
 
+/// The formulas of the microfacet BRDF's value (not its sampling).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum MicrofacetModel {
+    /// Walter et al. 2007: the exact Beckmann `Lambda`, the Fresnel term at
+    /// the microfacet, `F(wo.h)`.
+    #[default]
+    Physical,
+    /// The course's starter (`bsdf.h`, `bsdf.cpp`), as a correct student
+    /// solution computes it (`--course-exact`): `Lambda` with
+    /// `exp(-a^2) / (a pi)` where the exact one has `a sqrt(pi)` (so `G`
+    /// exceeds 1 for rough surfaces near grazing), and the Fresnel term
+    /// declared `F(wi)`, evaluated at `cos(theta_i) = wi.z`.
+    Starter,
+}
+
+/// How radiance changes as it crosses a refracting boundary (glass,
+/// refraction), with `eta` the index of the far side (`wi`'s) over the
+/// near side (`wo`'s).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum EtaScaling {
+    /// `1 / eta^2`: radiance divided by the square of the index it enters
+    /// relative to the one it leaves, read along the path from the camera
+    /// (Veach 1997, section 5.2).
+    #[default]
+    Physical,
+    /// The course's starter: it defines `eta = 1 / ior` entering and `ior`
+    /// leaving (the near side's index over the far side's, the reciprocal
+    /// of this module's) and divides by *its* `eta^2`, so the factor is
+    /// `eta^2` here. The two agree across a closed object seen from
+    /// outside, where the factors entering and leaving cancel.
+    Starter,
+}
+
+impl EtaScaling {
+    /// The factor on transmitted radiance for the relative index `eta`.
+    pub fn factor(self, eta: f32) -> f32 {
+        match self {
+            EtaScaling::Physical => 1.0 / (eta * eta),
+            EtaScaling::Starter => eta * eta,
+        }
+    }
+}
+
 /// Choices a render makes for every BSDF.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct BsdfOptions {
     pub fresnel: FresnelModel,
     pub microfacet: MicrofacetSampling,
+    pub microfacet_model: MicrofacetModel,
+    pub eta_scaling: EtaScaling,
 }
 
 /// The BSDF of a surface point.
@@ -175,6 +220,7 @@ impl Bsdf {
             } => Bsdf::Refraction(Refraction {
                 transmittance,
                 eta: relative(ior),
+                eta_scaling: options.eta_scaling,
             }),
             Material::Glass {
                 reflectance,
@@ -186,10 +232,12 @@ impl Bsdf {
                 transmittance,
                 eta: relative(ior),
                 fresnel: options.fresnel,
+                eta_scaling: options.eta_scaling,
             }),
-            Material::Microfacet { alpha, eta, k } => {
-                Bsdf::Conductor(Conductor::new(alpha, eta, k, options.microfacet))
-            }
+            Material::Microfacet { alpha, eta, k } => Bsdf::Conductor(
+                Conductor::new(alpha, eta, k, options.microfacet)
+                    .with_model(options.microfacet_model),
+            ),
         }
     }
 

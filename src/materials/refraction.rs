@@ -15,6 +15,7 @@
 use glam::Vec3;
 
 use super::specular::{reflect, refract};
+use super::EtaScaling;
 use super::{BsdfSample, Density};
 use crate::math::Rgb;
 
@@ -24,6 +25,8 @@ pub struct Refraction {
     pub transmittance: Rgb,
     /// Index of the far side over the near side.
     pub eta: f32,
+    /// `1 / eta^2` on transmitted radiance, or the starter's `eta^2`.
+    pub eta_scaling: EtaScaling,
 }
 
 impl Refraction {
@@ -35,7 +38,7 @@ impl Refraction {
         }
         Some(match refract(wo, self.eta) {
             Some(wi) => BsdfSample {
-                f: self.transmittance / (self.eta * self.eta * wi.z.abs()),
+                f: self.transmittance * self.eta_scaling.factor(self.eta) / wi.z.abs(),
                 wi,
                 density: Density::Delta(1.0),
                 transmission: true,
@@ -57,11 +60,32 @@ impl Refraction {
 
 #[cfg(test)]
 mod tests {
+    use super::super::EtaScaling;
     use super::*;
+
+    /// The starter's convention multiplies transmitted radiance by `eta^2`
+    /// where the physical one divides by it; both directions.
+    #[test]
+    fn the_starters_eta_scaling_is_the_reciprocal() {
+        let steep = Vec3::new(0.3, 0.0, 0.91f32.sqrt());
+        for eta in [1.5f32, 1.0 / 1.5] {
+            let weight = |eta_scaling| {
+                let r = Refraction {
+                    eta_scaling,
+                    transmittance: Rgb::splat(0.8),
+                    eta,
+                };
+                r.sample(steep).unwrap().weight().x
+            };
+            assert!((weight(EtaScaling::Physical) - 0.8 / (eta * eta)).abs() < 1e-5);
+            assert!((weight(EtaScaling::Starter) - 0.8 * eta * eta).abs() < 1e-5);
+        }
+    }
 
     #[test]
     fn refracts_or_under_total_internal_reflection_reflects() {
         let r = Refraction {
+            eta_scaling: EtaScaling::Physical,
             transmittance: Rgb::splat(0.9),
             eta: 1.0 / 1.5,
         };

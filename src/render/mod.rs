@@ -14,7 +14,8 @@ pub mod tiles;
 
 pub use film::Film;
 pub use output::{
-    check_output_path, tone_map, write_image, write_png, OutputError, OutputFormat, OUTPUT_FORMATS,
+    check_output_path, tone_map, write_image, write_image_quantized, write_png,
+    write_png_quantized, OutputError, OutputFormat, Quantization, OUTPUT_FORMATS,
 };
 pub use rendered::Rendered;
 pub use tiles::{render_tiles, RenderSettings, RenderStats};

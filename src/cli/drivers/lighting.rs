@@ -4,6 +4,7 @@
 
 use std::time::Instant;
 
+use super::course::{self, CoursePart};
 use super::{prepare, report_render, write_film, Prepared, Result};
 use crate::adaptive::Adaptive;
 use crate::bvh::WideBvhAccel;
@@ -174,6 +175,13 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
 
 /// `part3-direct`: emission plus direct lighting (`-H` or light sampling).
 pub fn part3(args: &CourseArgs) -> Result<()> {
+    let course_part = CoursePart {
+        direct_only: true,
+        ..CoursePart::PART_3_1
+    };
+    if let Some(done) = course::render(args, course_part) {
+        return done;
+    }
     run(args, |scene| {
         Ok(Part {
             tracer: PathTracer {
@@ -214,12 +222,23 @@ fn render_paths(args: &CourseArgs) -> Result<()> {
 /// `part4-global`: paths up to `-m` bounces with Russian roulette
 /// (`--roulette`).
 pub fn part4(args: &CourseArgs) -> Result<()> {
+    if let Some(done) = course::render(args, CoursePart::PART_3_1) {
+        return done;
+    }
     render_paths(args)
 }
 
 /// `part5-adaptive`: part 4 with adaptive sampling (`-a`, default 32 0.05)
 /// and the sample-rate image.
 pub fn part5(args: &CourseArgs) -> Result<()> {
+    let course_part = CoursePart {
+        part5_written: true,
+        rate_image: true,
+        ..CoursePart::PART_3_1
+    };
+    if let Some(done) = course::render(args, course_part) {
+        return done;
+    }
     run(args, |scene| {
         Ok(Part {
             tracer: path_tracer(args, scene),
@@ -234,6 +253,9 @@ pub fn part5(args: &CourseArgs) -> Result<()> {
 pub fn part6(args: &CourseArgs) -> Result<()> {
     let mut args = args.clone();
     args.builtin = Builtin::MaterialsBox;
+    if let Some(done) = course::render(&args, CoursePart::PART_3_2) {
+        return done;
+    }
     render_paths(&args)
 }
 
@@ -244,18 +266,31 @@ pub fn part7(args: &CourseArgs) -> Result<()> {
     let mut args = args.clone();
     args.builtin = Builtin::EnvironmentSpheres;
     args.builtin_sky = true;
+    if let Some(done) = course::render(&args, CoursePart::PART_3_2) {
+        return done;
+    }
     render_paths(&args)
 }
 
 /// `part8-dof`: part 4's path tracer through a thin lens (`-b`, `-d`,
 /// `--focus-at`).
 pub fn part8(args: &CourseArgs) -> Result<()> {
+    if let Some(done) = course::render(args, CoursePart::PART_3_2) {
+        return done;
+    }
     render_paths(args)
 }
 
 /// `pathtracer`: parts 1 to 5 with the course's flags; adaptive sampling
 /// only with `-a`, the sample-rate image always (as the course writes it).
 pub fn pathtracer(args: &CourseArgs) -> Result<()> {
+    let course_part = CoursePart {
+        rate_image: true,
+        ..CoursePart::PART_3_2
+    };
+    if let Some(done) = course::render(args, course_part) {
+        return done;
+    }
     run(args, |scene| {
         Ok(Part {
             tracer: path_tracer(args, scene),

@@ -1,6 +1,7 @@
 //! What each binary does, so that `bin/` holds no logic and the tests run
 //! exactly what the binaries run.
 
+pub mod course;
 pub mod geometry;
 pub mod lighting;
 

@@ -1,0 +1,136 @@
+//! `--course-exact`: what each lighting binary renders when asked for the
+//! image a correct course solution makes ([`crate::course`]).
+
+use std::time::Instant;
+
+use super::lighting::environment_light;
+use super::{prepare, report_render, Prepared, Result};
+use crate::bvh::WideBvhAccel;
+use crate::cli::CourseArgs;
+use crate::course::{Assignment, CourseExact, StarterDirect, StarterTracer};
+use crate::mistakes::Mistake;
+use crate::render::rendered::rate_image_path;
+use crate::render::{render_image, write_image_quantized, RenderSettings};
+use crate::scene::info::describe;
+use crate::world::World;
+
+/// What a binary is, as far as the course's image is concerned.
+#[derive(Clone, Copy, Debug)]
+pub struct CoursePart {
+    /// The assignment `--course-exact` means without `=3-1` or `=3-2`.
+    pub assignment: Assignment,
+    /// Part 3's binary: direct light only (`-m 1`, whatever `-m` says).
+    pub direct_only: bool,
+    /// Whether the student has written part 5, so that adaptive sampling
+    /// is on by default.
+    pub part5_written: bool,
+    /// Whether the binary writes the sample-rate image.
+    pub rate_image: bool,
+}
+
+impl CoursePart {
+    /// A binary of parts 1 to 4 of 3-1: no adaptive sampling by default,
+    /// no rate image.
+    pub const PART_3_1: CoursePart = CoursePart {
+        assignment: Assignment::PathTracer1,
+        direct_only: false,
+        part5_written: false,
+        rate_image: false,
+    };
+    /// A binary of 3-2: parts 1 to 5 written (the staff's), no rate image.
+    pub const PART_3_2: CoursePart = CoursePart {
+        assignment: Assignment::PathTracer2,
+        direct_only: false,
+        part5_written: true,
+        rate_image: false,
+    };
+}
+
+/// The course's image of the scene `args` name, or `None` when
+/// `--course-exact` is not given.
+pub fn render(args: &CourseArgs, part: CoursePart) -> Option<Result<()>> {
+    if args.lists_mistakes() {
+        print!("{}", Mistake::catalogue());
+        return Some(Ok(()));
+    }
+    let exact = args.course_exact(part.assignment)?;
+    Some(run(args, part, exact))
+}
+
+fn run(args: &CourseArgs, part: CoursePart, exact: CourseExact) -> Result<()> {
+    let Prepared {
+        scene,
+        primitives,
+        camera,
+    } = prepare(args)?;
+    let environment = environment_light(args)?;
+    let tracer = StarterTracer {
+        direct: if args.hemisphere {
+            StarterDirect::Hemisphere
+        } else {
+            StarterDirect::Importance
+        },
+        light_samples: args.light_samples,
+        max_depth: if part.direct_only {
+            1
+        } else {
+            args.max_depth()
+        },
+        accumulate: part.direct_only || args.accumulate == 1,
+        lamps: exact.lamps(),
+        mistakes: args.mistake_set()?,
+    };
+    let adaptive = match args.adaptive_settings()? {
+        Some(a) => Some(a),
+        None => exact.default_adaptive(part.part5_written),
+    };
+    let mistakes: Vec<String> = tracer.mistakes.iter().map(|m| m.to_string()).collect();
+    let course_line = format!(
+        "course-exact: assignment {}, {:?} direct light, -m {}, -o {}, adaptive {}, mistakes: {}",
+        exact.assignment.name(),
+        tracer.direct,
+        tracer.max_depth,
+        u8::from(tracer.accumulate),
+        adaptive.map_or("off".into(), |a| format!("{} {}", a.batch, a.tolerance)),
+        if mistakes.is_empty() {
+            "none".into()
+        } else {
+            mistakes.join(", ")
+        },
+    );
+    if args.info {
+        print!("{}", describe(&scene, &camera));
+        println!("{course_line}");
+        return Ok(());
+    }
+    eprintln!("{course_line}");
+    let start = Instant::now();
+    let accel = WideBvhAccel::new(primitives);
+    println!(
+        "{}: BVH build {:.3} s",
+        scene.source,
+        start.elapsed().as_secs_f64()
+    );
+    let world =
+        World::with_options(&scene, &accel, exact.world_options()).with_environment(environment);
+    let settings = RenderSettings {
+        sampler: exact.sampler(),
+        ..args.render_settings()
+    };
+    let mut rendered = render_image(&camera, &settings, adaptive, |ray, sampler| {
+        tracer.radiance(&world, ray, sampler)
+    });
+    if adaptive.is_some() {
+        exact.apply_staff_early_stop(&mut rendered, settings.samples_per_pixel);
+    }
+    report_render(&rendered);
+    let path = args.output_path();
+    write_image_quantized(&rendered.film, &path, exact.quantization())?;
+    println!("wrote {}", path.display());
+    if part.rate_image {
+        let rate = rate_image_path(&path);
+        rendered.write_rate_image(settings.samples_per_pixel, &rate)?;
+        println!("wrote {}", rate.display());
+    }
+    Ok(())
+}

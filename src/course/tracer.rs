@@ -1,0 +1,376 @@
+//! The course's path tracer as a correct student solution writes it: the
+//! starter's functions, in the starter's order, one Rust function each.
+//!
+//! ```text
+//! est_radiance_global_illumination(r) = zero_bounce_radiance(r)          (-o 1, or -m 0)
+//!                                     + at_least_one_bounce_radiance(r)  (-m >= 1)
+//! at_least_one_bounce_radiance(r, k) =
+//!       one_bounce_radiance                     (not at a delta BSDF; -o 1, or k = m)
+//!     + f |cos| / (pdf q) [ at_least_one_bounce_radiance(r', k + 1)
+//!                           + zero_bounce_radiance(r') if the BSDF is a delta ]
+//!                                                (k < m, and the coin comes up, q = 0.65
+//!                                                 from the second vertex on)
+//! estimate_direct_lighting_hemisphere = 1/N sum f L_e(w_j) cos / (1 / 2 pi),
+//!     N = (number of lights) x -l, L_e what the ray's first hit emits
+//! estimate_direct_lighting_importance = sum over lights 1/N_l sum f L cos / pdf,
+//!     N_l = 1 for a delta light, -l otherwise; samples from behind the
+//!     surface skipped, shadow rays to the sample
+//! ```
+//!
+//! What this computes differently from [`crate::global::PathTracer`]
+//! (the project's default), and why, is the table of docs/14-course-image.md:
+//! no multiple importance sampling; the lights weighted by the starter's
+//! `sample_L` ([`crate::lights::LightConvention::Course`], set in the
+//! [`World`] this runs on); the hemisphere estimator sees the scene's
+//! geometry only (the lamp's mesh, not the area light, which is not
+//! geometry in the course); a camera ray that escapes sees only the
+//! environment map (`-e`), not the ambient sky; a mirror or glass at the
+//! last vertex sends no ray; with [`Lamps::LightQuads`] (assignment 3-2)
+//! each area light is its own quad emitting `L / A max(0, n . wo)` and the
+//! lamp mesh emits nothing.
+//!
+//! The catalogue's mistakes of parts 3 and 4 ([`crate::mistakes`]) live
+//! here, each a branch on [`StarterTracer::mistakes`] at the line a student
+//! would get wrong; with none chosen, every branch takes the correct way.
+
+use glam::Vec3;
+
+use crate::global::CONTINUE_PROBABILITY;
+use crate::intersect::{Hit, Intersector, Ray};
+use crate::lights::{EmitterRole, Light, LightPdf};
+use crate::materials::{Bsdf, BsdfSample};
+use crate::math::warp::{sample_uniform_hemisphere, uniform_hemisphere_pdf};
+use crate::math::Rgb;
+use crate::mistakes::{self, Mistake, Mistakes};
+use crate::sampling::Sampler;
+use crate::world::{ShadingPoint, World};
+
+/// How direct light is estimated (`-H` or not).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StarterDirect {
+    /// `estimate_direct_lighting_hemisphere` (`-H`).
+    Hemisphere,
+    /// `estimate_direct_lighting_importance`.
+    Importance,
+}
+
+/// What the camera, mirrors, glass and `-H` see of a lamp.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Lamps {
+    /// Assignment 3-1: the scene's emissive meshes, with their radiance
+    /// (in the course's boxes, the `light` mesh under the area light).
+    MeshFaces,
+    /// Assignment 3-2: the starter turns each area light into two
+    /// triangles of its own that emit `radiance / area * max(0, n . wo)`,
+    /// and the lamp mesh that stands in for it emits nothing
+    /// (`../shared/cs184-format.md`, section 8.1).
+    LightQuads,
+}
+
+/// The course's path tracer (see the module docs).
+#[derive(Clone, Copy, Debug)]
+pub struct StarterTracer {
+    pub direct: StarterDirect,
+    /// `-l`: samples per area light (`ns_area_light`).
+    pub light_samples: u32,
+    /// `-m`: `max_ray_depth`.
+    pub max_depth: u32,
+    /// `-o 1`: `isAccumBounces`.
+    pub accumulate: bool,
+    pub lamps: Lamps,
+    /// The catalogue's mistakes to make (none: a correct solution).
+    pub mistakes: Mistakes,
+}
+
+impl StarterTracer {
+    /// Whether light that has bounced at vertex `k` is part of the image.
+    fn counts(&self, k: u32) -> bool {
+        self.accumulate
+            || k == self.max_depth()
+            || self.mistakes.has(Mistake::NoAccumulationSumsAll)
+    }
+
+    /// `-m` as the depth test reads it.
+    fn max_depth(&self) -> u32 {
+        if self.mistakes.has(Mistake::DepthOffByOne) {
+            self.max_depth + 1
+        } else {
+            self.max_depth
+        }
+    }
+
+    /// `bsdf->f(wo, wi)`.
+    fn f(&self, bsdf: &Bsdf, wo: Vec3, wi: Vec3) -> Rgb {
+        let f = bsdf.f(wo, wi);
+        if self.mistakes.has(Mistake::BrdfIsAlbedo) && matches!(bsdf, Bsdf::Diffuse(_)) {
+            f * std::f32::consts::PI
+        } else {
+            f
+        }
+    }
+
+    /// The factor a bounce multiplies the light it brings by:
+    /// `f cos / pdf`.
+    fn bounce_weight(&self, bsdf: &Bsdf, sample: &BsdfSample) -> Rgb {
+        let brdf_is_albedo =
+            self.mistakes.has(Mistake::BrdfIsAlbedo) && matches!(bsdf, Bsdf::Diffuse(_));
+        let f = if brdf_is_albedo {
+            sample.f * std::f32::consts::PI
+        } else {
+            sample.f
+        };
+        if self.mistakes.has(Mistake::ThroughputWithoutCosPdf) {
+            f
+        } else {
+            BsdfSample { f, ..*sample }.weight()
+        }
+    }
+
+    /// `cos(theta)` at the shading point for the local direction `wi`.
+    fn cos_theta(&self, wi: Vec3) -> f32 {
+        if self.mistakes.has(Mistake::NoCosine) {
+            1.0
+        } else {
+            wi.z
+        }
+    }
+
+    /// Divides a sample by its `pdf`.
+    fn over_pdf(&self, value: Rgb, pdf: f32) -> Rgb {
+        if self.mistakes.has(Mistake::NoPdf) {
+            value
+        } else {
+            value / pdf
+        }
+    }
+
+    /// Radiance along a camera ray.
+    #[doc(alias = "est_radiance_global_illumination")]
+    pub fn radiance<I: Intersector>(
+        &self,
+        world: &World<I>,
+        ray: &Ray,
+        sampler: &mut impl Sampler,
+    ) -> Rgb {
+        let Some(hit) = world.intersector.intersect(ray) else {
+            return self.escaped_radiance(world, ray);
+        };
+        let mut l = Rgb::ZERO;
+        if self.accumulate || self.max_depth() == 0 {
+            l += self.zero_bounce_radiance(world, ray, &hit);
+        }
+        if self.max_depth() >= 1 {
+            l += self.at_least_one_bounce_radiance(world, ray, hit, 1, sampler);
+        }
+        l
+    }
+
+    /// What a ray that meets nothing sees: the environment map, and with
+    /// [`Lamps::LightQuads`] a lamp's quad it crosses.
+    fn escaped_radiance<I: Intersector>(&self, world: &World<I>, ray: &Ray) -> Rgb {
+        let mut l = self.quads_radiance(world, ray, f32::INFINITY);
+        for (_, light) in world.lights.infinite() {
+            if let Light::Environment(env) = light {
+                l += env.escaped_radiance(ray.dir);
+            }
+        }
+        l
+    }
+
+    /// Light emitted by the surface `ray` meets at `hit` towards the ray's
+    /// origin: `isect.bsdf->get_emission()`.
+    pub fn zero_bounce_radiance<I: Intersector>(
+        &self,
+        world: &World<I>,
+        ray: &Ray,
+        hit: &Hit,
+    ) -> Rgb {
+        match self.lamps {
+            Lamps::MeshFaces => world.material(hit).emission(),
+            Lamps::LightQuads => {
+                let lamp_mesh = matches!(
+                    world.lights.role(hit.primitive),
+                    EmitterRole::Shown { light: Some(_) }
+                );
+                let surface = if lamp_mesh {
+                    Rgb::ZERO
+                } else {
+                    world.material(hit).emission()
+                };
+                surface + self.quads_radiance(world, ray, hit.t)
+            }
+        }
+    }
+
+    /// With [`Lamps::LightQuads`], the light of the area lights' quads that
+    /// `ray` crosses before `t_max`: `L / A max(0, n . wo)`.
+    fn quads_radiance<I: Intersector>(&self, world: &World<I>, ray: &Ray, t_max: f32) -> Rgb {
+        if self.lamps != Lamps::LightQuads {
+            return Rgb::ZERO;
+        }
+        let mut l = Rgb::ZERO;
+        for (_, rect, _) in world.lights.rects() {
+            if rect.hit_distance(ray).is_some_and(|t| t <= t_max) {
+                let cos = rect.normal.dot(-ray.dir).max(0.0);
+                l += rect.radiance * (cos / rect.area());
+            }
+        }
+        l
+    }
+
+    /// Direct light at `point`, by `-H` or by the lights.
+    pub fn one_bounce_radiance<I: Intersector>(
+        &self,
+        world: &World<I>,
+        point: &ShadingPoint,
+        sampler: &mut impl Sampler,
+    ) -> Rgb {
+        match self.direct {
+            StarterDirect::Hemisphere => self.direct_hemisphere(world, point, sampler),
+            StarterDirect::Importance => self.direct_importance(world, point, sampler),
+        }
+    }
+
+    /// `N = lights x -l` directions uniform on the hemisphere; each brings
+    /// what its first hit emits ([`Self::zero_bounce_radiance`]).
+    #[doc(alias = "estimate_direct_lighting_hemisphere")]
+    pub fn direct_hemisphere<I: Intersector>(
+        &self,
+        world: &World<I>,
+        point: &ShadingPoint,
+        sampler: &mut impl Sampler,
+    ) -> Rgb {
+        let n = (world.lights.lights.len().max(1) as u32 * self.light_samples).max(1);
+        let mut sum = Rgb::ZERO;
+        for _ in 0..n {
+            let wi = sample_uniform_hemisphere(sampler.get_2d());
+            let ray = point.hit.spawn_ray(point.frame.to_world(wi));
+            let Some(hit) = world.intersector.intersect(&ray) else {
+                continue;
+            };
+            let emitted = self.zero_bounce_radiance(world, &ray, &hit);
+            let pdf = if self.mistakes.has(Mistake::HemispherePdfOneOverPi) {
+                std::f32::consts::FRAC_1_PI
+            } else {
+                uniform_hemisphere_pdf(wi)
+            };
+            let f = self.f(&point.bsdf, point.wo, wi);
+            sum += self.over_pdf(f * emitted * self.cos_theta(wi), pdf);
+        }
+        sum / n as f32
+    }
+
+    /// Every light, `-l` samples each (one for a delta light), by its
+    /// `sample_L`; samples from below the surface and blocked ones add
+    /// nothing.
+    #[doc(alias = "estimate_direct_lighting_importance")]
+    pub fn direct_importance<I: Intersector>(
+        &self,
+        world: &World<I>,
+        point: &ShadingPoint,
+        sampler: &mut impl Sampler,
+    ) -> Rgb {
+        let mut total = Rgb::ZERO;
+        for (_, light) in world.lights.lit() {
+            let n = if light.is_delta() {
+                1
+            } else {
+                self.light_samples.max(1)
+            };
+            let mut sum = Rgb::ZERO;
+            for _ in 0..n {
+                let (uc, u) = (sampler.get_1d(), sampler.get_2d());
+                let sample = match light {
+                    Light::Rect(rect) if self.mistakes.has(Mistake::LightFromBehind) => {
+                        mistakes::two_sided_rect_sample(rect, point.hit.p, u)
+                    }
+                    _ => light.sample_li(point.hit.p, uc, u),
+                };
+                let Some(sample) = sample else {
+                    continue;
+                };
+                let wi = point.frame.to_local(sample.wi);
+                if wi.z < 0.0 {
+                    continue;
+                }
+                let shadow = if self.mistakes.has(Mistake::ShadowAcne) {
+                    mistakes::shadow_ray_without_offset(&point.hit, &sample)
+                } else if self.mistakes.has(Mistake::ShadowRayReachesLight) {
+                    mistakes::shadow_ray_to_the_light(&point.hit, &sample)
+                } else if sample.distance.is_finite() {
+                    point
+                        .hit
+                        .spawn_ray_to(point.hit.p + sample.distance * sample.wi)
+                } else {
+                    point.hit.spawn_ray(sample.wi)
+                };
+                if world.intersector.occluded(&shadow) {
+                    continue;
+                }
+                let pdf = match sample.pdf {
+                    LightPdf::Delta => 1.0,
+                    LightPdf::SolidAngle(pdf) => pdf,
+                };
+                let f = self.f(&point.bsdf, point.wo, wi);
+                sum += self.over_pdf(f * sample.radiance * self.cos_theta(wi), pdf);
+            }
+            total += if self.mistakes.has(Mistake::LightSamplesNotAveraged) {
+                sum
+            } else {
+                sum / n as f32
+            };
+        }
+        total
+    }
+
+    /// The light of paths of one bounce or more from vertex `k` (1 for the
+    /// camera ray's hit) at `hit`, which `ray` found.
+    pub fn at_least_one_bounce_radiance<I: Intersector>(
+        &self,
+        world: &World<I>,
+        ray: &Ray,
+        hit: Hit,
+        k: u32,
+        sampler: &mut impl Sampler,
+    ) -> Rgb {
+        let point = world.shade_surface(hit, -ray.dir);
+        if point.bsdf.is_black() {
+            return Rgb::ZERO;
+        }
+        let delta = point.bsdf.is_delta();
+        let mut l = Rgb::ZERO;
+        if !delta && self.counts(k) {
+            l += self.one_bounce_radiance(world, &point, sampler);
+        }
+        if k >= self.max_depth() {
+            return l;
+        }
+        let q = if k > 1 { CONTINUE_PROBABILITY } else { 1.0 };
+        if k > 1 && sampler.get_1d() >= q {
+            return l;
+        }
+        let uc = sampler.get_1d();
+        let Some(sample) = point.bsdf.sample(point.wo, uc, sampler.get_2d()) else {
+            return l;
+        };
+        let next_ray = point.hit.spawn_ray(point.frame.to_world(sample.wi));
+        let incoming = match world.intersector.intersect(&next_ray) {
+            Some(next) => {
+                let shown = if delta || self.mistakes.has(Mistake::EmissionEveryBounce) {
+                    self.zero_bounce_radiance(world, &next_ray, &next)
+                } else {
+                    Rgb::ZERO
+                };
+                shown + self.at_least_one_bounce_radiance(world, &next_ray, next, k + 1, sampler)
+            }
+            None if delta => self.escaped_radiance(world, &next_ray),
+            None => Rgb::ZERO,
+        };
+        let q_divided = if self.mistakes.has(Mistake::RouletteNotDivided) {
+            1.0
+        } else {
+            q
+        };
+        l + self.bounce_weight(&point.bsdf, &sample) * incoming / q_divided
+    }
+}

@@ -1,0 +1,51 @@
+//! The wrong ways of part 3's light sampling that need more than a changed
+//! factor: the shadow ray's two classic mistakes, and a light sampled from
+//! behind. Called by [`crate::course::StarterTracer`] only when the
+//! mistake is chosen.
+
+use crate::intersect::{Hit, Ray};
+use crate::lights::{LightSample, RectLight, SurfacePoint};
+
+use glam::Vec2;
+
+/// [`super::Mistake::ShadowAcne`]: the shadow ray starts at the hit point
+/// itself with `min_t = 0`, so the surface it leaves, met again at `t`
+/// within rounding of 0, blocks about half of the samples.
+pub fn shadow_ray_without_offset(hit: &Hit, sample: &LightSample) -> Ray {
+    Ray {
+        t_max: sample.distance,
+        ..Ray::new(hit.p, sample.wi)
+    }
+}
+
+/// [`super::Mistake::ShadowRayReachesLight`]: the shadow ray (offset
+/// correctly) runs on to the light sample itself and a little past it (the
+/// starter's `max_t = dist` with the hit test's `t <= max_t`, with room for
+/// rounding), so a lamp mesh on the light blocks it.
+pub fn shadow_ray_to_the_light(hit: &Hit, sample: &LightSample) -> Ray {
+    let ray = hit.spawn_ray(sample.wi);
+    Ray {
+        t_max: sample.distance * (1.0 + 1e-3),
+        ..ray
+    }
+}
+
+/// [`super::Mistake::LightFromBehind`]: the rectangle sampled as if it
+/// emitted from both sides (its cosine taken as `|cos|`), with the light's
+/// convention as [`RectLight::sample_li`] applies it.
+pub fn two_sided_rect_sample(rect: &RectLight, p: glam::Vec3, u: Vec2) -> Option<LightSample> {
+    let area = rect.area();
+    if area.is_nan() || area <= 0.0 {
+        return None;
+    }
+    let point = SurfacePoint {
+        q: rect.center + (u.x - 0.5) * rect.dim_x + (u.y - 0.5) * rect.dim_y,
+        normal: rect.normal,
+        two_sided: true,
+        radiance: rect.radiance,
+        area_pdf: 1.0 / area,
+    };
+    let mut sample = point.seen_from(p)?;
+    sample.radiance *= rect.convention.area_factor(sample.distance);
+    Some(sample)
+}
