@@ -1,4 +1,4 @@
-//! Every mistake of the catalogue ([`pathtracer::mistakes`]) shows the
+//! Every mistake of parts 3 and 4 in the catalogue ([`pathtracer::mistakes`]) shows the
 //! symptom the catalogue names: the built-in Cornell box rendered small by
 //! the course's renderer with and without it, compared by the mean
 //! luminance of the image or of a region, with its standard error from the
@@ -12,208 +12,8 @@
 mod common;
 
 use common::*;
-use pathtracer::bvh::BvhAccel;
-use pathtracer::course::{Assignment, CourseExact, Lamps, StarterDirect, StarterTracer};
-use pathtracer::intersect::Intersector;
-use pathtracer::intersect::Primitives;
-use pathtracer::math::luminance;
-use pathtracer::mistakes::{Mistake, Mistakes};
-use pathtracer::raygen::Camera;
-use pathtracer::render::{pixel_ray, render_image, RenderSettings};
-use pathtracer::sampling::SamplerKind;
-use pathtracer::scene::{builtin, Scene};
-use pathtracer::world::World;
-
-const WIDTH: u32 = 64;
-const HEIGHT: u32 = 48;
-
-/// Mean luminance over rows `rows` of a render and its standard error.
-#[derive(Clone, Copy, Debug)]
-struct Mean {
-    value: f64,
-    se: f64,
-}
-
-/// The box as the course's renderer sees it, ready to render.
-struct Box3_1 {
-    scene: Scene,
-    camera: Camera,
-    accel: BvhAccel,
-}
-
-impl Box3_1 {
-    fn new() -> Self {
-        Self::of(builtin::cornell_box())
-    }
-
-    /// The box with its lamp (the area light and its emissive quad) hung
-    /// `drop` lower, so that the ceiling lies behind it at a slant.
-    fn with_lamp_lowered(drop: f32) -> Self {
-        let mut scene = builtin::cornell_box();
-        for light in &mut scene.lights {
-            if let pathtracer::scene::Light::Area { center, .. } = light {
-                center.y -= drop;
-            }
-        }
-        let lamp: Vec<u32> = scene
-            .mesh
-            .triangles
-            .iter()
-            .zip(&scene.mesh.materials)
-            .filter(|(_, &m)| {
-                matches!(
-                    scene.materials[m as usize],
-                    pathtracer::scene::Material::Emission { .. }
-                )
-            })
-            .flat_map(|(t, _)| *t)
-            .collect();
-        let mut moved = vec![false; scene.mesh.positions.len()];
-        for v in lamp {
-            if !std::mem::replace(&mut moved[v as usize], true) {
-                scene.mesh.positions[v as usize].y -= drop;
-            }
-        }
-        Self::of(scene)
-    }
-
-    fn of(scene: Scene) -> Self {
-        let primitives = Primitives::from_scene(&scene);
-        // Framed as the course frames 480 x 360 (smaller sizes zoom in),
-        // rendered at 64 x 48.
-        let camera = Camera::course_placement(&scene.camera, &primitives.bounds(), 480, 360);
-        Box3_1 {
-            accel: BvhAccel::new(primitives),
-            scene,
-            camera,
-        }
-    }
-
-    /// The pixels whose centre sees a point for which `keep` holds.
-    fn pixels_seeing(&self, keep: impl Fn(glam::Vec3) -> bool) -> Vec<usize> {
-        let primitives = Primitives::from_scene(&self.scene);
-        let linear = pathtracer::intersect::LinearScan::new(&primitives);
-        let centre = glam::Vec2::splat(0.5);
-        (0..WIDTH * HEIGHT)
-            .filter(|&i| {
-                let ray = pixel_ray(
-                    &self.camera,
-                    (WIDTH, HEIGHT),
-                    (i % WIDTH, i / WIDTH),
-                    centre,
-                    centre,
-                );
-                linear.intersect(&ray).is_some_and(|hit| keep(hit.p))
-            })
-            .map(|i| i as usize)
-            .collect()
-    }
-
-    /// The mean luminance of rows `rows` rendered by `tracer` at `spp`.
-    fn mean(
-        &self,
-        tracer: &StarterTracer,
-        spp: u32,
-        rows: std::ops::Range<u32>,
-        seed: u64,
-    ) -> Mean {
-        let pixels: Vec<usize> = rows
-            .flat_map(|y| (0..WIDTH).map(move |x| (y * WIDTH + x) as usize))
-            .collect();
-        self.mean_over(tracer, spp, &pixels, seed)
-    }
-
-    /// The mean luminance of `pixels` rendered by `tracer` at `spp`.
-    fn mean_over(&self, tracer: &StarterTracer, spp: u32, pixels: &[usize], seed: u64) -> Mean {
-        let exact = CourseExact {
-            assignment: Assignment::PathTracer1,
-        };
-        let world = World::with_options(&self.scene, &self.accel, exact.world_options());
-        let settings = RenderSettings {
-            width: WIDTH,
-            height: HEIGHT,
-            samples_per_pixel: spp,
-            threads: None,
-            seed,
-            sampler: SamplerKind::Independent,
-            progress: false,
-        };
-        let rendered = render_image(&self.camera, &settings, None, |ray, sampler| {
-            tracer.radiance(&world, ray, sampler)
-        });
-        assert_eq!(rendered.rejected(), 0);
-        let n = pixels.len() as f64;
-        let value = pixels
-            .iter()
-            .map(|&i| luminance(rendered.estimates[i].radiance) as f64)
-            .sum::<f64>()
-            / n;
-        let variance: f64 = pixels
-            .iter()
-            .map(|&i| rendered.estimates[i].variance_of_mean)
-            .sum();
-        Mean {
-            value,
-            se: variance.sqrt() / n,
-        }
-    }
-}
-
-fn tracer(
-    mistakes: &[Mistake],
-    direct: StarterDirect,
-    light_samples: u32,
-    max_depth: u32,
-    accumulate: bool,
-) -> StarterTracer {
-    StarterTracer {
-        direct,
-        light_samples,
-        max_depth,
-        accumulate,
-        lamps: Lamps::MeshFaces,
-        mistakes: Mistakes::of(mistakes),
-    }
-}
-
-const ALL_ROWS: std::ops::Range<u32> = 0..HEIGHT;
-/// Below the lamp's rows, so that its emission does not dilute ratios.
-const BELOW_LAMP: std::ops::Range<u32> = 8..HEIGHT;
-
-/// The ratio `a / b` and its standard error (independent estimates).
-fn ratio(a: Mean, b: Mean) -> (f64, f64) {
-    let r = a.value / b.value;
-    (
-        r,
-        r * ((a.se / a.value).powi(2) + (b.se / b.value).powi(2)).sqrt(),
-    )
-}
-
-/// Asserts that the ratio of `wrong` to `right` is `factor` within `z`
-/// standard errors.
-fn assert_ratio(label: &str, wrong: Mean, right: Mean, factor: f64, alpha: f64) {
-    let (r, se) = ratio(wrong, right);
-    let z = z_two_sided(alpha);
-    eprintln!("{label}: ratio {r:.4} (se {se:.4}) against {factor:.4}");
-    assert!(
-        (r - factor).abs() <= z * se,
-        "{label}: ratio {r:.4} is not {factor:.4} (se {se:.4}, {:.1} standard errors off)",
-        (r - factor) / se
-    );
-}
-
-/// Asserts that the ratio of `wrong` to `right` lies in `range`, and that
-/// the range's nearest end is more than `z` standard errors away.
-fn assert_ratio_in(label: &str, wrong: Mean, right: Mean, range: std::ops::Range<f64>, alpha: f64) {
-    let (r, se) = ratio(wrong, right);
-    let z = z_two_sided(alpha);
-    eprintln!("{label}: ratio {r:.4} (se {se:.4}) in {range:?}");
-    let margin = (r - range.start).min(range.end - r);
-    assert!(
-        margin > z * se,
-        "{label}: ratio {r:.4} (se {se:.4}) is not safely in {range:?}"
-    );
-}
+use pathtracer::course::StarterDirect;
+use pathtracer::mistakes::Mistake;
 
 use StarterDirect::{Hemisphere as H, Importance as L};
 
@@ -224,7 +24,7 @@ use StarterDirect::{Hemisphere as H, Importance as L};
 /// four times it.
 #[test]
 fn direct_light_mistakes_scale_by_their_factor() {
-    let b = Box3_1::new();
+    let b = CourseView::new();
     let alpha = ALPHA / 4.0;
     let pi = std::f64::consts::PI;
     let cases: [(Mistake, StarterDirect, u32, f64); 4] = [
@@ -236,9 +36,14 @@ fn direct_light_mistakes_scale_by_their_factor() {
     for (k, (mistake, direct, l, factor)) in cases.into_iter().enumerate() {
         let spp = if direct == H { 64 } else { 16 };
         let seed = 10 * k as u64;
-        let right = b.mean(&tracer(&[], direct, l, 1, false), spp, BELOW_LAMP, seed);
+        let right = b.mean(
+            &starter_tracer(&[], direct, l, 1, false),
+            spp,
+            BELOW_LAMP,
+            seed,
+        );
         let wrong = b.mean(
-            &tracer(&[mistake], direct, l, 1, false),
+            &starter_tracer(&[mistake], direct, l, 1, false),
             spp,
             BELOW_LAMP,
             seed + 1,
@@ -257,7 +62,7 @@ fn direct_light_mistakes_scale_by_their_factor() {
 /// light, so it blocks every shadow ray).
 #[test]
 fn direct_light_mistakes_move_the_image_the_stated_way() {
-    let b = Box3_1::new();
+    let b = CourseView::new();
     let alpha = ALPHA / 4.0;
     let cases: [(Mistake, std::ops::Range<f64>); 3] = [
         (Mistake::NoCosine, 1.25..1.8),
@@ -266,18 +71,18 @@ fn direct_light_mistakes_move_the_image_the_stated_way() {
     ];
     for (k, (mistake, range)) in cases.into_iter().enumerate() {
         let seed = 100 + 10 * k as u64;
-        let right = b.mean(&tracer(&[], L, 1, 1, false), 16, BELOW_LAMP, seed);
+        let right = b.mean(&starter_tracer(&[], L, 1, 1, false), 16, BELOW_LAMP, seed);
         let wrong = b.mean(
-            &tracer(&[mistake], L, 1, 1, false),
+            &starter_tracer(&[mistake], L, 1, 1, false),
             16,
             BELOW_LAMP,
             seed + 1,
         );
         assert_ratio_in(&mistake.to_string(), wrong, right, range, alpha);
     }
-    let right = b.mean(&tracer(&[], L, 1, 1, false), 16, BELOW_LAMP, 150);
+    let right = b.mean(&starter_tracer(&[], L, 1, 1, false), 16, BELOW_LAMP, 150);
     let wrong = b.mean(
-        &tracer(&[Mistake::ShadowRayReachesLight], L, 1, 1, false),
+        &starter_tracer(&[Mistake::ShadowRayReachesLight], L, 1, 1, false),
         16,
         BELOW_LAMP,
         151,
@@ -295,12 +100,12 @@ fn direct_light_mistakes_move_the_image_the_stated_way() {
 /// plenty in the wrong one.
 #[test]
 fn light_from_behind_lights_the_ceiling() {
-    let b = Box3_1::with_lamp_lowered(0.3);
+    let b = CourseView::with_lamp_lowered(0.3);
     let ceiling = b.pixels_seeing(|p| p.y > 1.495);
     assert!(ceiling.len() > 50, "{} ceiling pixels", ceiling.len());
-    let right = b.mean_over(&tracer(&[], L, 1, 1, false), 16, &ceiling, 1);
+    let right = b.mean_over(&starter_tracer(&[], L, 1, 1, false), 16, &ceiling, 1);
     let wrong = b.mean_over(
-        &tracer(&[Mistake::LightFromBehind], L, 1, 1, false),
+        &starter_tracer(&[Mistake::LightFromBehind], L, 1, 1, false),
         16,
         &ceiling,
         2,
@@ -321,7 +126,7 @@ fn light_from_behind_lights_the_ceiling() {
 /// (`throughput-without-cos-pdf`).
 #[test]
 fn path_mistakes_scale_by_their_factor() {
-    let b = Box3_1::new();
+    let b = CourseView::new();
     let alpha = ALPHA / 2.0;
     let cases: [(Mistake, u32, f64); 2] = [
         (Mistake::RouletteNotDivided, 3, 0.65),
@@ -333,9 +138,9 @@ fn path_mistakes_scale_by_their_factor() {
     ];
     for (k, (mistake, depth, factor)) in cases.into_iter().enumerate() {
         let seed = 200 + 10 * k as u64;
-        let right = b.mean(&tracer(&[], L, 1, depth, false), 32, ALL_ROWS, seed);
+        let right = b.mean(&starter_tracer(&[], L, 1, depth, false), 32, ALL_ROWS, seed);
         let wrong = b.mean(
-            &tracer(&[mistake], L, 1, depth, false),
+            &starter_tracer(&[mistake], L, 1, depth, false),
             32,
             ALL_ROWS,
             seed + 1,
@@ -351,11 +156,11 @@ fn path_mistakes_scale_by_their_factor() {
 /// second bounce (`-m 2 -o 0`) by the direct light it counts again.
 #[test]
 fn path_mistakes_render_another_setting() {
-    let b = Box3_1::new();
+    let b = CourseView::new();
     let alpha = ALPHA / 3.0;
-    let as_m2 = b.mean(&tracer(&[], L, 1, 2, true), 32, ALL_ROWS, 300);
+    let as_m2 = b.mean(&starter_tracer(&[], L, 1, 2, true), 32, ALL_ROWS, 300);
     let off_by_one = b.mean(
-        &tracer(&[Mistake::DepthOffByOne], L, 1, 1, true),
+        &starter_tracer(&[Mistake::DepthOffByOne], L, 1, 1, true),
         32,
         ALL_ROWS,
         301,
@@ -369,9 +174,9 @@ fn path_mistakes_render_another_setting() {
     );
 
     // The lamp's own rows left out: -o 0 adds no zero bounce, right or wrong.
-    let accumulated = b.mean(&tracer(&[], L, 1, 3, true), 32, BELOW_LAMP, 310);
+    let accumulated = b.mean(&starter_tracer(&[], L, 1, 3, true), 32, BELOW_LAMP, 310);
     let sums_all = b.mean(
-        &tracer(&[Mistake::NoAccumulationSumsAll], L, 1, 3, false),
+        &starter_tracer(&[Mistake::NoAccumulationSumsAll], L, 1, 3, false),
         32,
         BELOW_LAMP,
         311,
@@ -384,9 +189,9 @@ fn path_mistakes_render_another_setting() {
         alpha,
     );
 
-    let right = b.mean(&tracer(&[], L, 1, 2, false), 32, ALL_ROWS, 320);
+    let right = b.mean(&starter_tracer(&[], L, 1, 2, false), 32, ALL_ROWS, 320);
     let twice = b.mean(
-        &tracer(&[Mistake::EmissionEveryBounce], L, 1, 2, false),
+        &starter_tracer(&[Mistake::EmissionEveryBounce], L, 1, 2, false),
         32,
         ALL_ROWS,
         321,

@@ -29,9 +29,11 @@
 //! each area light is its own quad emitting `L / A max(0, n . wo)` and the
 //! lamp mesh emits nothing.
 //!
-//! The catalogue's mistakes of parts 3 and 4 ([`crate::mistakes`]) live
+//! The catalogue's mistakes ([`crate::mistakes`]) of parts 3 and 4 live
 //! here, each a branch on [`StarterTracer::mistakes`] at the line a student
-//! would get wrong; with none chosen, every branch takes the correct way.
+//! would get wrong, and those of parts 6 and 7 in the mistakes' own
+//! versions of the starter's BSDFs and environment light, called from here
+//! when chosen; with none chosen, every branch takes the correct way.
 
 use glam::Vec3;
 
@@ -171,7 +173,11 @@ impl StarterTracer {
         let mut l = self.quads_radiance(world, ray, f32::INFINITY);
         for (_, light) in world.lights.infinite() {
             if let Light::Environment(env) = light {
-                l += env.escaped_radiance(ray.dir);
+                l += if mistakes::environment::any(self.mistakes) {
+                    mistakes::environment::escaped_radiance(env, ray.dir, self.mistakes)
+                } else {
+                    env.escaped_radiance(ray.dir)
+                };
             }
         }
         l
@@ -284,6 +290,9 @@ impl StarterTracer {
                     Light::Rect(rect) if self.mistakes.has(Mistake::LightFromBehind) => {
                         mistakes::two_sided_rect_sample(rect, point.hit.p, u)
                     }
+                    Light::Environment(env) if mistakes::environment::any(self.mistakes) => {
+                        mistakes::environment::sample(env, u, self.mistakes)
+                    }
                     _ => light.sample_li(point.hit.p, uc, u),
                 };
                 let Some(sample) = sample else {
@@ -349,8 +358,10 @@ impl StarterTracer {
         if k > 1 && sampler.get_1d() >= q {
             return l;
         }
-        let uc = sampler.get_1d();
-        let Some(sample) = point.bsdf.sample(point.wo, uc, sampler.get_2d()) else {
+        let (uc, u) = (sampler.get_1d(), sampler.get_2d());
+        let sample = mistakes::materials::sample_specular(&point.bsdf, point.wo, uc, self.mistakes)
+            .unwrap_or_else(|| point.bsdf.sample(point.wo, uc, u));
+        let Some(sample) = sample else {
             return l;
         };
         let next_ray = point.hit.spawn_ray(point.frame.to_world(sample.wi));

@@ -15,6 +15,8 @@
 //! renderer would go wrong; a row in the symptoms test.
 
 pub mod direct;
+pub mod environment;
+pub mod materials;
 
 pub use direct::{shadow_ray_to_the_light, shadow_ray_without_offset, two_sided_rect_sample};
 
@@ -39,6 +41,17 @@ pub enum Mistake {
     DepthOffByOne,
     NoAccumulationSumsAll,
     ThroughputWithoutCosPdf,
+    // Part 6: mirror and glass.
+    ReflectWrongAxis,
+    RefractionRatioInverted,
+    NoEtaSquared,
+    NoTotalInternalReflection,
+    SchlickR0NotSquared,
+    // Part 7: environment light.
+    EnvPdfNoSin,
+    EnvPdfNoJacobian,
+    EnvMapUFlipped,
+    EnvMapVFlipped,
 }
 
 /// What the catalogue says of a mistake.
@@ -58,7 +71,7 @@ pub struct MistakeInfo {
 
 impl Mistake {
     /// Every mistake, in the catalogue's order (by part).
-    pub const ALL: [Mistake; 13] = [
+    pub const ALL: [Mistake; 22] = [
         Mistake::NoCosine,
         Mistake::NoPdf,
         Mistake::HemispherePdfOneOverPi,
@@ -72,6 +85,15 @@ impl Mistake {
         Mistake::DepthOffByOne,
         Mistake::NoAccumulationSumsAll,
         Mistake::ThroughputWithoutCosPdf,
+        Mistake::ReflectWrongAxis,
+        Mistake::RefractionRatioInverted,
+        Mistake::NoEtaSquared,
+        Mistake::NoTotalInternalReflection,
+        Mistake::SchlickR0NotSquared,
+        Mistake::EnvPdfNoSin,
+        Mistake::EnvPdfNoJacobian,
+        Mistake::EnvMapUFlipped,
+        Mistake::EnvMapVFlipped,
     ];
 
     /// The catalogue's entry.
@@ -167,6 +189,69 @@ impl Mistake {
                 "at_least_one_bounce_radiance",
                 "the bounced light is multiplied by f alone, not by f cos / pdf",
                 "indirect light pi times too dark on diffuse surfaces",
+            ),
+            Mistake::ReflectWrongAxis => (
+                "reflect-wrong-axis",
+                6,
+                "BSDF::reflect",
+                "wo reflected through the tangent plane, (wo.x, wo.y, -wo.z), not about the normal, (-wo.x, -wo.y, wo.z)",
+                "a mirror ball turns dark inside a bright ring: its rays head into the ball instead of away",
+            ),
+            Mistake::RefractionRatioInverted => (
+                "refraction-ratio-inverted",
+                6,
+                "BSDF::refract",
+                "Snell's law with the ratio of indices upside down (ior entering, 1 / ior leaving)",
+                "glass looks like a mirror: light that meets it from outside is mostly totally reflected, and what enters bends the wrong way",
+            ),
+            Mistake::NoEtaSquared => (
+                "no-eta-squared",
+                6,
+                "GlassBSDF::sample_f, RefractionBSDF::sample_f",
+                "the transmitted radiance is not divided by eta^2",
+                "nothing on a closed glass object seen from outside (the factors entering and leaving cancel); a single refracting surface is eta^2 too bright or too dark",
+            ),
+            Mistake::NoTotalInternalReflection => (
+                "no-total-internal-reflection",
+                6,
+                "GlassBSDF::sample_f",
+                "when refract() fails (total internal reflection) the sample returns no light instead of reflecting",
+                "glass balls look the same (light inside a ball never meets the critical angle); glass of other shapes turns black where light should reflect inside, like the sides of a block seen through its top",
+            ),
+            Mistake::SchlickR0NotSquared => (
+                "schlick-r0-not-squared",
+                6,
+                "GlassBSDF::sample_f",
+                "Schlick's R0 = ((1 - ior) / (1 + ior))^2 taken without the square",
+                "glass reflects about five times too much near normal incidence: strong reflections of the lamp and the walls on glass",
+            ),
+            Mistake::EnvPdfNoSin => (
+                "env-pdf-no-sin",
+                7,
+                "EnvironmentLight::sample_L",
+                "the density per steradian left without the 1 / sin(theta) of the lat-long map's Jacobian",
+                "light from near the horizon too strong, from near the poles too weak: a biased, brighter image",
+            ),
+            Mistake::EnvPdfNoJacobian => (
+                "env-pdf-no-jacobian",
+                7,
+                "EnvironmentLight::sample_L",
+                "the density per steradian left without the 1 / (2 pi^2) of the lat-long map's Jacobian",
+                "direct light from the map 2 pi^2 (about 20) times too dark",
+            ),
+            Mistake::EnvMapUFlipped => (
+                "env-map-u-flipped",
+                7,
+                "EnvironmentLight::sample_dir, sample_L",
+                "the map read with u (the azimuth) flipped",
+                "the environment mirrored left to right: the sun and the shadows on the other side",
+            ),
+            Mistake::EnvMapVFlipped => (
+                "env-map-v-flipped",
+                7,
+                "EnvironmentLight::sample_dir, sample_L",
+                "the map read with v (the polar angle) flipped",
+                "the environment upside down: sky below, ground above, objects lit from below",
             ),
         };
         MistakeInfo {

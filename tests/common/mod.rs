@@ -9,6 +9,7 @@ pub mod geometry;
 pub mod radiometry;
 pub mod scenes;
 pub mod stats;
+pub mod symptoms;
 
 pub use collada::*;
 pub use course::*;
@@ -17,3 +18,4 @@ pub use geometry::*;
 pub use radiometry::*;
 pub use scenes::*;
 pub use stats::*;
+pub use symptoms::*;
