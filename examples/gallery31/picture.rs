@@ -34,6 +34,17 @@ impl Picture {
         }
     }
 
+    /// Display values as they are, in `[0, 1]` (a colour map).
+    #[allow(dead_code)] // Used by examples/symptoms, not by gallery31.
+    pub fn display(label: impl Into<String>, width: u32, height: u32, display: Vec<Rgb>) -> Self {
+        Picture {
+            label: label.into(),
+            width,
+            height,
+            display,
+        }
+    }
+
     pub fn of(label: impl Into<String>, rendered: &Rendered) -> Self {
         let film = &rendered.film;
         Picture::radiance(label, film.width, film.height, &film.pixels)
