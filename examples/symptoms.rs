@@ -20,14 +20,16 @@ use std::error::Error;
 use std::fmt::Write as _;
 use std::path::Path;
 
+use pathtracer::adaptive::Adaptive;
 use pathtracer::bvh::WideBvhAccel;
-use pathtracer::course::{Assignment, CourseExact, Lamps, StarterDirect, StarterTracer};
+use pathtracer::course::{pixel, Assignment, CourseExact, Lamps, StarterDirect, StarterTracer};
+use pathtracer::depth_of_field::ThinLens;
 use pathtracer::environment::{builtin_sky, EnvironmentLight, EnvironmentSampling};
 use pathtracer::intersect::Primitives;
 use pathtracer::math::{luminance, Rgb};
 use pathtracer::mistakes::{Mistake, Mistakes};
 use pathtracer::raygen::Camera;
-use pathtracer::render::{render_image, RenderSettings, Rendered};
+use pathtracer::render::{RenderSettings, Rendered};
 use pathtracer::sampling::SamplerKind;
 use pathtracer::scene::{builtin, Light, Material, Scene};
 use pathtracer::world::World;
@@ -58,6 +60,10 @@ struct Showing {
     max_depth: u32,
     accumulate: bool,
     spp: u32,
+    /// `-b` and `-d`.
+    lens: Option<ThinLens>,
+    /// `-a 32 0.05`, and the rate images shown.
+    adaptive: bool,
 }
 
 fn showing(m: Mistake) -> Showing {
@@ -69,6 +75,8 @@ fn showing(m: Mistake) -> Showing {
         max_depth: 1,
         accumulate: true,
         spp: 64,
+        lens: None,
+        adaptive: false,
     };
     let paths = |stage, max_depth| Showing {
         max_depth,
@@ -85,9 +93,33 @@ fn showing(m: Mistake) -> Showing {
             light_samples: 4,
             ..direct(Stage::CornellBox)
         },
-        NoCosine | BrdfIsAlbedo | ShadowAcne | ShadowRayReachesLight | DepthOffByOne => {
-            direct(Stage::CornellBox)
-        }
+        FovFullAngle
+        | NoCosine
+        | BrdfIsAlbedo
+        | ShadowAcne
+        | ShadowRayReachesLight
+        | DepthOffByOne => direct(Stage::CornellBox),
+        AdaptiveNotSquareRooted | AdaptiveCountNotUpdated => Showing {
+            spp: 128,
+            adaptive: true,
+            ..direct(Stage::CornellBox)
+        },
+        LensRadiusUnscaled => Showing {
+            lens: Some(ThinLens {
+                radius: 0.02,
+                focal_distance: 2.0,
+            }),
+            spp: 128,
+            ..direct(Stage::CornellBox)
+        },
+        FocusOnASphere => Showing {
+            lens: Some(ThinLens {
+                radius: 0.3,
+                focal_distance: 5.0,
+            }),
+            spp: 128,
+            ..direct(Stage::CornellBox)
+        },
         NoAccumulationSumsAll => Showing {
             accumulate: false,
             ..paths(Stage::CornellBox, 3)
@@ -112,6 +144,8 @@ impl Showing {
     /// note where the figure's scene differs.
     fn command(&self, m: Mistake) -> String {
         let binary = match self.stage {
+            _ if self.lens.is_some() => "part8-dof",
+            _ if self.adaptive => "part5-adaptive",
             Stage::CornellBox | Stage::LoweredLamp if self.max_depth == 1 => "part3-direct",
             Stage::CornellBox | Stage::LoweredLamp => "part4-global",
             Stage::MaterialsBox => "part6-materials",
@@ -126,6 +160,12 @@ impl Showing {
         }
         if self.hemisphere {
             flags += " -H";
+        }
+        if let Some(lens) = self.lens {
+            write!(flags, " -b {} -d {}", lens.radius, lens.focal_distance).unwrap();
+        }
+        if self.adaptive {
+            flags += " -a 32 0.05";
         }
         let lowered = match self.stage {
             Stage::LoweredLamp => " (the figure lowers the lamp by 0.3, in code)",
@@ -146,7 +186,8 @@ struct Staged {
     environment: Option<EnvironmentLight>,
 }
 
-fn stage(stage: Stage) -> Result<Staged> {
+fn stage(how: &Showing) -> Result<Staged> {
+    let stage = how.stage;
     let mut scene = match stage {
         Stage::CornellBox | Stage::LoweredLamp => builtin::cornell_box(),
         Stage::MaterialsBox => builtin::materials_box(),
@@ -164,6 +205,10 @@ fn stage(stage: Stage) -> Result<Staged> {
     };
     let primitives = Primitives::from_scene(&scene);
     let camera = Camera::course_placement(&scene.camera, &primitives.bounds(), 480, 360);
+    let camera = match how.lens {
+        Some(lens) => camera.with_lens(lens),
+        None => camera,
+    };
     Ok(Staged {
         accel: WideBvhAccel::new(primitives),
         scene,
@@ -218,7 +263,8 @@ fn render(staged: &Staged, how: &Showing, mistakes: Mistakes, threads: usize) ->
         sampler: SamplerKind::Independent,
         progress: false,
     };
-    render_image(&staged.camera, &settings, None, |ray, s| {
+    let adaptive = how.adaptive.then(Adaptive::default);
+    pixel::render(&staged.camera, &settings, adaptive, mistakes, |ray, s| {
         tracer.radiance(&world, ray, s)
     })
 }
@@ -289,24 +335,25 @@ fn run() -> Result<()> {
     for m in Mistake::ALL {
         let info = m.info();
         let how = showing(m);
-        let staged = stage(how.stage)?;
+        let staged = stage(&how)?;
         let right = render(&staged, &how, Mistakes::NONE, threads);
         let wrong = render(&staged, &how, Mistakes::of(&[m]), threads);
         let name = format!("symptom-{}.png", info.name);
-        grid(
-            &name,
-            3,
-            &[
-                Picture::of("the course's image (--course-exact)", &right),
-                Picture::of(format!("--mistake {}", info.name), &wrong),
-                Picture::display(
-                    "mistaken / correct: blue 1/4, white 1, red 4",
-                    SIZE.0,
-                    SIZE.1,
-                    ratio_map(&wrong, &right),
-                ),
-            ],
-        )?;
+        let mut pictures = vec![
+            Picture::of("the course's image (--course-exact)", &right),
+            Picture::of(format!("--mistake {}", info.name), &wrong),
+            Picture::display(
+                "mistaken / correct: blue 1/4, white 1, red 4",
+                SIZE.0,
+                SIZE.1,
+                ratio_map(&wrong, &right),
+            ),
+        ];
+        if how.adaptive {
+            pictures.push(Picture::rate("its sample rates", &right, how.spp));
+            pictures.push(Picture::rate("the mistake's sample rates", &wrong, how.spp));
+        }
+        grid(&name, 3, &pictures)?;
         if info.part != part {
             part = info.part;
             writeln!(doc, "\n## Part {part}\n")?;

@@ -294,3 +294,23 @@ fn mistake_list_and_unknown_mistakes() {
     );
     assert!(!stderr.contains("panicked"), "{stderr}");
 }
+
+/// The normal-shading binaries refuse `--course-exact` and `--mistake`
+/// rather than ignore them.
+#[test]
+fn normal_shading_refuses_the_course_image_flags() {
+    for binary in [
+        env!("CARGO_BIN_EXE_part1-raygen"),
+        env!("CARGO_BIN_EXE_part2-bvh"),
+    ] {
+        for flags in [&["--course-exact"][..], &["--mistake", "no-cosine"][..]] {
+            let mut args = vec!["--info"];
+            args.extend(flags);
+            let (ok, _, stderr) = run(binary, &args);
+            assert!(
+                !ok && stderr.contains("shades normals"),
+                "{binary} {flags:?}: {stderr}"
+            );
+        }
+    }
+}

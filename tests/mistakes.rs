@@ -198,3 +198,70 @@ fn path_mistakes_render_another_setting() {
     );
     assert_ratio_in("emission-every-bounce", twice, right, 1.3..10.0, alpha);
 }
+
+/// `fov-full-angle`: the view about twice as wide, so the box fills much
+/// less of the frame and the dark outside much more (`-m 1`).
+#[test]
+fn a_full_angle_fov_shrinks_the_scene() {
+    let b = CourseView::new();
+    let dark = |mistakes: &[Mistake], seed| {
+        let image = b.render(&starter_tracer(mistakes, L, 1, 1, true), 4, None, seed);
+        let black = image
+            .film
+            .pixels
+            .iter()
+            .filter(|p| p.max_element() == 0.0)
+            .count();
+        black as f64 / image.film.pixels.len() as f64
+    };
+    let (right, wrong) = (dark(&[], 700), dark(&[Mistake::FovFullAngle], 701));
+    eprintln!("black pixels: right {right:.3}, wrong {wrong:.3}");
+    assert!(
+        wrong > right + 0.25,
+        "fov-full-angle: black {wrong} against {right}"
+    );
+}
+
+/// Part 5 at `-s 128 -a 32 0.05`, `-m 1`: `adaptive-n-not-square-rooted`
+/// stops pixels at the first check (a half-width too small by sqrt(n)),
+/// so the mean sample count drops; `adaptive-count-not-updated` reports
+/// every pixel at 128 samples and darkens those that stopped early by the
+/// share they took.
+#[test]
+fn adaptive_mistakes_show_in_the_sample_counts() {
+    let b = CourseView::new();
+    let adaptive = Some(pathtracer::adaptive::Adaptive::default());
+    let tracer = |mistakes: &[Mistake]| starter_tracer(mistakes, L, 1, 1, true);
+    let right = b.render(&tracer(&[]), 128, adaptive, 710);
+    let early = b.render(
+        &tracer(&[Mistake::AdaptiveNotSquareRooted]),
+        128,
+        adaptive,
+        711,
+    );
+    let (n_right, n_early) = (
+        right.mean_samples_per_pixel(),
+        early.mean_samples_per_pixel(),
+    );
+    eprintln!("mean samples per pixel: right {n_right:.1}, n not square-rooted {n_early:.1}");
+    assert!(n_early < 0.6 * n_right, "{n_early} against {n_right}");
+
+    let stuck = b.render(
+        &tracer(&[Mistake::AdaptiveCountNotUpdated]),
+        128,
+        adaptive,
+        710,
+    );
+    assert!(stuck.estimates.iter().all(|e| e.samples == 128));
+    // Same seed as `right`: the same samples, each pixel scaled by n / 128.
+    for (w, r) in stuck.estimates.iter().zip(&right.estimates) {
+        let expected = r.radiance * (r.samples as f32 / 128.0);
+        assert!(
+            (w.radiance - expected).abs().max_element() <= 1e-5 * expected.max_element().max(1.0)
+        );
+    }
+    assert!(
+        right.estimates.iter().any(|e| e.samples < 128),
+        "no pixel stopped early"
+    );
+}

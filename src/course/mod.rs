@@ -23,8 +23,11 @@
 //! | pixels that stop early | their mean | 3-2: the staff library's mean, `n / (n - 1)` of it | `libpt31.so` |
 //! | PNG | rounded | truncated, `floor(255 v)` | `HDRImageBuffer::toColor` |
 //!
-//! The settings live in [`CourseExact`]; the integrator in [`tracer`].
+//! The settings live in [`CourseExact`]; the integrator in [`tracer`]; the
+//! pixel loop and the camera, as the starter's `raytrace_pixel` and
+//! `generate_ray`, in [`pixel`].
 
+pub mod pixel;
 pub mod tracer;
 
 pub use tracer::{Lamps, StarterDirect, StarterTracer};

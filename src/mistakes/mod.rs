@@ -5,14 +5,21 @@
 //! is wrong, and what it looks like ([`MistakeInfo`]). A mistake lives in
 //! the course's own renderer ([`crate::course`], which `--mistake` turns
 //! on), at the line a student would get wrong, as one branch on
-//! [`Mistakes::has`]: the project's own renderer has none, and costs
-//! nothing more for them. docs/13-symptoms.md shows each one beside the
+//! [`Mistakes::has`]: parts 1, 5 and 8 in [`crate::course::pixel`] (the
+//! starter's `raytrace_pixel` and `generate_ray`), parts 3 and 4 in
+//! [`crate::course::tracer`], and where a mistake needs more than a
+//! changed line, in this module's files ([`direct`], [`materials`],
+//! [`environment`]), called from there. The project's own renderer has
+//! none, and costs nothing more for them. Parts 1 and 2's intersection and
+//! BVH mistakes are not in the catalogue yet. docs/13-symptoms.md shows each one beside the
 //! correct image (`cargo run --release --example symptoms`), and
 //! `tests/mistakes.rs` checks each one's symptom.
 //!
 //! To add one: a variant of [`Mistake`] and its entry in
 //! [`Mistake::info`] and [`Mistake::ALL`]; the branch where the course's
-//! renderer would go wrong; a row in the symptoms test.
+//! renderer would go wrong; a test of its symptom (`tests/mistakes.rs`,
+//! `tests/mistakes_3_2.rs`); how the gallery shows it (`showing` in
+//! `examples/symptoms.rs`), then run the gallery again.
 
 pub mod direct;
 pub mod environment;
@@ -26,6 +33,8 @@ use std::fmt;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[repr(u8)]
 pub enum Mistake {
+    // Part 1: ray generation.
+    FovFullAngle,
     // Part 3: direct lighting.
     NoCosine,
     NoPdf,
@@ -41,6 +50,9 @@ pub enum Mistake {
     DepthOffByOne,
     NoAccumulationSumsAll,
     ThroughputWithoutCosPdf,
+    // Part 5: adaptive sampling.
+    AdaptiveNotSquareRooted,
+    AdaptiveCountNotUpdated,
     // Part 6: mirror and glass.
     ReflectWrongAxis,
     RefractionRatioInverted,
@@ -52,6 +64,9 @@ pub enum Mistake {
     EnvPdfNoJacobian,
     EnvMapUFlipped,
     EnvMapVFlipped,
+    // Part 8: depth of field.
+    LensRadiusUnscaled,
+    FocusOnASphere,
 }
 
 /// What the catalogue says of a mistake.
@@ -71,7 +86,8 @@ pub struct MistakeInfo {
 
 impl Mistake {
     /// Every mistake, in the catalogue's order (by part).
-    pub const ALL: [Mistake; 22] = [
+    pub const ALL: [Mistake; 27] = [
+        Mistake::FovFullAngle,
         Mistake::NoCosine,
         Mistake::NoPdf,
         Mistake::HemispherePdfOneOverPi,
@@ -85,6 +101,8 @@ impl Mistake {
         Mistake::DepthOffByOne,
         Mistake::NoAccumulationSumsAll,
         Mistake::ThroughputWithoutCosPdf,
+        Mistake::AdaptiveNotSquareRooted,
+        Mistake::AdaptiveCountNotUpdated,
         Mistake::ReflectWrongAxis,
         Mistake::RefractionRatioInverted,
         Mistake::NoEtaSquared,
@@ -94,11 +112,20 @@ impl Mistake {
         Mistake::EnvPdfNoJacobian,
         Mistake::EnvMapUFlipped,
         Mistake::EnvMapVFlipped,
+        Mistake::LensRadiusUnscaled,
+        Mistake::FocusOnASphere,
     ];
 
     /// The catalogue's entry.
     pub fn info(self) -> MistakeInfo {
         let (name, part, function, what, symptom) = match self {
+            Mistake::FovFullAngle => (
+                "fov-full-angle",
+                1,
+                "Camera::generate_ray",
+                "the sensor's half-width taken as tan(hFov), not tan(hFov / 2)",
+                "the view about twice as wide: the scene small in the middle of a dark frame",
+            ),
             Mistake::NoCosine => (
                 "no-cosine",
                 3,
@@ -190,6 +217,20 @@ impl Mistake {
                 "the bounced light is multiplied by f alone, not by f cos / pdf",
                 "indirect light pi times too dark on diffuse surfaces",
             ),
+            Mistake::AdaptiveNotSquareRooted => (
+                "adaptive-n-not-square-rooted",
+                5,
+                "PathTracer::raytrace_pixel",
+                "the confidence half-width taken as 1.96 sigma / n, not 1.96 sigma / sqrt(n)",
+                "pixels stop at the first check: the rate image almost all blue, the image noisier",
+            ),
+            Mistake::AdaptiveCountNotUpdated => (
+                "adaptive-count-not-updated",
+                5,
+                "PathTracer::raytrace_pixel",
+                "the pixel's sample count is left at ns_aa when it stops early",
+                "the rate image all red; pixels that stopped early too dark by the share of samples they took",
+            ),
             Mistake::ReflectWrongAxis => (
                 "reflect-wrong-axis",
                 6,
@@ -252,6 +293,20 @@ impl Mistake {
                 "EnvironmentLight::sample_dir, sample_L",
                 "the map read with v (the polar angle) flipped",
                 "the environment upside down: sky below, ground above, objects lit from below",
+            ),
+            Mistake::LensRadiusUnscaled => (
+                "lens-radius-unscaled",
+                8,
+                "Camera::generate_ray_for_thin_lens",
+                "the point on the lens taken on the unit disk, not scaled by the lens radius -b",
+                "everything but the plane of focus blurred as by a lens of radius 1, whatever -b says",
+            ),
+            Mistake::FocusOnASphere => (
+                "focus-on-a-sphere",
+                8,
+                "Camera::generate_ray_for_thin_lens",
+                "the point in focus taken at distance d along the normalised pinhole ray, not on the plane z = -d",
+                "the focus curves towards the lens away from the image's centre: the corners focus nearer than -d",
             ),
         };
         MistakeInfo {

@@ -29,25 +29,30 @@ use crate::math::Rgb;
 use crate::raygen::{Camera, CameraSample};
 use crate::sampling::{PixelSampler, Sampler};
 
+/// The normalised film point of pixel `(x, y)` (row 0 at the top of the
+/// image) at the sub-pixel offset `offset` in `[0, 1)^2`: the course
+/// samples `((x + u) / w, (y' + v) / h)` with `y'` counted from the bottom
+/// row.
+pub fn film_point((width, height): (u32, u32), (x, y): (u32, u32), offset: Vec2) -> Vec2 {
+    let y_from_bottom = (height - 1 - y) as f32;
+    Vec2::new(
+        (x as f32 + offset.x) / width as f32,
+        (y_from_bottom + offset.y) / height as f32,
+    )
+}
+
 /// The camera ray through pixel `(x, y)` (row 0 at the top of the image)
-/// at the sub-pixel offset `offset` in `[0, 1)^2`, through the lens point
-/// `lens` in `[0, 1)^2` if the camera has a lens.
-///
-/// The course samples the normalised point `((x + u) / w, (y' + v) / h)`
-/// with `y'` counted from the bottom row.
+/// at the sub-pixel offset `offset` in `[0, 1)^2` ([`film_point`]),
+/// through the lens point `lens` in `[0, 1)^2` if the camera has a lens.
 #[doc(alias = "generate_ray")]
 pub fn pixel_ray(
     camera: &Camera,
-    (width, height): (u32, u32),
-    (x, y): (u32, u32),
+    size: (u32, u32),
+    pixel: (u32, u32),
     offset: Vec2,
     lens: Vec2,
 ) -> Ray {
-    let y_from_bottom = (height - 1 - y) as f32;
-    let film = Vec2::new(
-        (x as f32 + offset.x) / width as f32,
-        (y_from_bottom + offset.y) / height as f32,
-    );
+    let film = film_point(size, pixel, offset);
     camera.generate_ray(&CameraSample { film, lens })
 }
 
@@ -64,6 +69,14 @@ pub struct PixelEstimate {
     pub variance_of_mean: f64,
 }
 
+/// Which pixel of which image, with up to how many samples.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PixelTask {
+    pub size: (u32, u32),
+    pub pixel: (u32, u32),
+    pub max_samples: u32,
+}
+
 /// Estimates pixel `(x, y)` with up to `max_samples` camera rays: one ray
 /// through the pixel centre when `max_samples == 1` (as the course does),
 /// otherwise rays at offsets in the pixel from `sampler`
@@ -75,30 +88,58 @@ pub struct PixelEstimate {
 #[doc(alias = "raytrace_pixel")]
 pub fn estimate_pixel(
     camera: &Camera,
-    (width, height): (u32, u32),
-    (x, y): (u32, u32),
+    size: (u32, u32),
+    pixel: (u32, u32),
     max_samples: u32,
     adaptive: Option<Adaptive>,
+    sampler: &mut PixelSampler,
+    radiance: impl FnMut(&Ray, &mut PixelSampler) -> Rgb,
+) -> PixelEstimate {
+    let task = PixelTask {
+        size,
+        pixel,
+        max_samples,
+    };
+    estimate_pixel_with(
+        task,
+        !camera.lens.is_pinhole(),
+        |sample| camera.generate_ray(sample),
+        |stats| adaptive.is_some_and(|a| a.should_stop(stats)),
+        sampler,
+        radiance,
+    )
+}
+
+/// [`estimate_pixel`] with the camera rays made by `generate` (which takes
+/// a lens sample when `has_lens`) and the pixel stopped when `stop` says,
+/// after each sample: the loop the course's renderer shares
+/// ([`crate::course::pixel`]).
+pub fn estimate_pixel_with(
+    task: PixelTask,
+    has_lens: bool,
+    generate: impl Fn(&CameraSample) -> Ray,
+    stop: impl Fn(&LuminanceStats) -> bool,
     sampler: &mut PixelSampler,
     mut radiance: impl FnMut(&Ray, &mut PixelSampler) -> Rgb,
 ) -> PixelEstimate {
     let mut stats = LuminanceStats::default();
     let mut sum = Rgb::ZERO;
     let mut estimate = PixelEstimate::default();
-    while estimate.samples < max_samples.max(1) {
-        sampler.start_pixel_sample((x, y), estimate.samples);
-        let offset = if max_samples <= 1 {
+    while estimate.samples < task.max_samples.max(1) {
+        sampler.start_pixel_sample(task.pixel, estimate.samples);
+        let offset = if task.max_samples <= 1 {
             Vec2::splat(0.5)
         } else {
             sampler.get_pixel_2d()
         };
         // A lens sample only for a lens, so pinhole renders stay as they were.
-        let lens = if camera.lens.is_pinhole() {
-            Vec2::splat(0.5)
-        } else {
+        let lens = if has_lens {
             sampler.get_2d()
+        } else {
+            Vec2::splat(0.5)
         };
-        let ray = pixel_ray(camera, (width, height), (x, y), offset, lens);
+        let film = film_point(task.size, task.pixel, offset);
+        let ray = generate(&CameraSample { film, lens });
         let l = radiance(&ray, sampler);
         estimate.samples += 1;
         if !l.is_finite() {
@@ -107,7 +148,7 @@ pub fn estimate_pixel(
         }
         sum += l;
         stats.push(l);
-        if adaptive.is_some_and(|a| a.should_stop(&stats)) {
+        if stop(&stats) {
             break;
         }
     }

@@ -2,14 +2,16 @@
 //! mistake of the catalogue, and the statistics that compare them
 //! (`tests/mistakes.rs`, `tests/mistakes_3_2.rs`).
 
+use pathtracer::adaptive::Adaptive;
 use pathtracer::bvh::BvhAccel;
-use pathtracer::course::{Assignment, CourseExact, Lamps, StarterDirect, StarterTracer};
+use pathtracer::course::{pixel, Assignment, CourseExact, Lamps, StarterDirect, StarterTracer};
+use pathtracer::depth_of_field::ThinLens;
 use pathtracer::environment::EnvironmentLight;
 use pathtracer::intersect::{Intersector, Primitives};
 use pathtracer::math::luminance;
 use pathtracer::mistakes::{Mistake, Mistakes};
 use pathtracer::raygen::Camera;
-use pathtracer::render::{pixel_ray, render_image, RenderSettings};
+use pathtracer::render::{pixel_ray, RenderSettings, Rendered};
 use pathtracer::sampling::SamplerKind;
 use pathtracer::scene::{builtin, Scene};
 use pathtracer::world::World;
@@ -123,8 +125,21 @@ impl CourseView {
         self.mean_over(tracer, spp, &pixels, seed)
     }
 
-    /// The mean luminance of `pixels` rendered by `tracer` at `spp`.
-    pub fn mean_over(&self, tracer: &StarterTracer, spp: u32, pixels: &[usize], seed: u64) -> Mean {
+    /// The same view through `lens`.
+    pub fn with_lens(mut self, lens: ThinLens) -> Self {
+        self.camera = self.camera.with_lens(lens);
+        self
+    }
+
+    /// The image `tracer` renders (its mistakes made) at up to `spp`
+    /// samples per pixel, stopping where `adaptive` says.
+    pub fn render(
+        &self,
+        tracer: &StarterTracer,
+        spp: u32,
+        adaptive: Option<Adaptive>,
+        seed: u64,
+    ) -> Rendered {
         let exact = CourseExact {
             assignment: Assignment::PathTracer1,
         };
@@ -139,9 +154,18 @@ impl CourseView {
             sampler: SamplerKind::Independent,
             progress: false,
         };
-        let rendered = render_image(&self.camera, &settings, None, |ray, sampler| {
-            tracer.radiance(&world, ray, sampler)
-        });
+        pixel::render(
+            &self.camera,
+            &settings,
+            adaptive,
+            tracer.mistakes,
+            |ray, sampler| tracer.radiance(&world, ray, sampler),
+        )
+    }
+
+    /// The mean luminance of `pixels` rendered by `tracer` at `spp`.
+    pub fn mean_over(&self, tracer: &StarterTracer, spp: u32, pixels: &[usize], seed: u64) -> Mean {
+        let rendered = self.render(tracer, spp, None, seed);
         assert_eq!(rendered.rejected(), 0);
         let n = pixels.len() as f64;
         let value = pixels

@@ -7,10 +7,10 @@ use super::lighting::environment_light;
 use super::{prepare, report_render, Prepared, Result};
 use crate::bvh::WideBvhAccel;
 use crate::cli::CourseArgs;
-use crate::course::{Assignment, CourseExact, StarterDirect, StarterTracer};
+use crate::course::{pixel, Assignment, CourseExact, StarterDirect, StarterTracer};
 use crate::mistakes::Mistake;
 use crate::render::rendered::rate_image_path;
-use crate::render::{render_image, write_image_quantized, RenderSettings};
+use crate::render::{write_image_quantized, RenderSettings};
 use crate::scene::info::describe;
 use crate::world::World;
 
@@ -117,8 +117,8 @@ fn run(args: &CourseArgs, part: CoursePart, exact: CourseExact) -> Result<()> {
         sampler: exact.sampler(),
         ..args.render_settings()
     };
-    let mut rendered = render_image(&camera, &settings, adaptive, |ray, sampler| {
-        tracer.radiance(&world, ray, sampler)
+    let mut rendered = pixel::render(&camera, &settings, adaptive, tracer.mistakes, |ray, s| {
+        tracer.radiance(&world, ray, s)
     });
     if adaptive.is_some() {
         exact.apply_staff_early_stop(&mut rendered, settings.samples_per_pixel);

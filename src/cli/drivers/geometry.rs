@@ -26,7 +26,21 @@ pub fn render_normals(
 /// Triangles are intersected by Möller-Trumbore, the course's test for
 /// part 1 (the later parts use the watertight test; see
 /// `docs/02-intersect.md`).
+/// The normal-shading binaries render no light, so neither the course's
+/// image nor a mistake: refuse the flags rather than ignore them.
+fn refuse_course_image(args: &CourseArgs, binary: &str) -> Result<()> {
+    if args.course_exact.is_some() || !args.mistakes.is_empty() {
+        return Err(format!(
+            "{binary} shades normals: --course-exact and --mistake are for the binaries that render light \
+             (part3-direct to part8-dof, pathtracer)"
+        )
+        .into());
+    }
+    Ok(())
+}
+
 pub fn part1(args: &CourseArgs) -> Result<()> {
+    refuse_course_image(args, "part1-raygen")?;
     let Some(mut p) = describe_or(prepare(args)?, args) else {
         return Ok(());
     };
@@ -45,6 +59,7 @@ pub fn part1(args: &CourseArgs) -> Result<()> {
 /// `part2-bvh`: normal shading through a BVH, with its build time and its
 /// speed-up over part 1's linear scan.
 pub fn part2(args: &CourseArgs) -> Result<()> {
+    refuse_course_image(args, "part2-bvh")?;
     let Some(p) = describe_or(prepare(args)?, args) else {
         return Ok(());
     };

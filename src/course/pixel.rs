@@ -1,0 +1,148 @@
+//! The starter's `PathTracer::raytrace_pixel` and
+//! `Camera::generate_ray` / `generate_ray_for_thin_lens` as a correct
+//! student solution writes them, with the catalogue's mistakes of parts 1,
+//! 5 and 8 at the lines a student would get wrong.
+//!
+//! ```text
+//! for i in 0..ns_aa:
+//!     ray through (x + u, y + v) / (w, h)      (the pixel's centre if ns_aa = 1)
+//!     L += est_radiance_global_illumination(ray); s1 += x_k; s2 += x_k^2
+//!     every samplesPerBatch samples: stop if 1.96 sigma / sqrt(n) <= maxTolerance * mu
+//! pixel = L / n;  sampleCount = n
+//! ```
+//!
+//! The loop is the project's ([`estimate_pixel_with`]); with no mistake
+//! the rays are the camera's own and the stopping rule the course's, so
+//! the pixel is [`crate::render::estimate_pixel`]'s, bit for bit.
+
+use glam::Vec3;
+
+use crate::adaptive::{Adaptive, LuminanceStats, Z_95};
+use crate::intersect::Ray;
+use crate::math::warp::sample_uniform_disk_concentric;
+use crate::math::Rgb;
+use crate::mistakes::{Mistake, Mistakes};
+use crate::raygen::{Camera, CameraSample};
+use crate::render::{
+    estimate_pixel_with, render_tiles, PixelEstimate, PixelTask, RenderSettings, Rendered,
+};
+use crate::sampling::PixelSampler;
+
+/// `Camera::generate_ray` (and `generate_ray_for_thin_lens` when the
+/// camera has a lens) for the normalised film point of `sample`.
+pub fn generate_ray(camera: &Camera, sample: &CameraSample, mistakes: Mistakes) -> Ray {
+    let camera_mistakes = [
+        Mistake::FovFullAngle,
+        Mistake::LensRadiusUnscaled,
+        Mistake::FocusOnASphere,
+    ];
+    if !camera_mistakes.iter().any(|&m| mistakes.has(m)) {
+        return camera.generate_ray(sample);
+    }
+    // The pinhole direction through the film point, camera space, z = -1.
+    let half = |fov_deg: f32| {
+        let angle = fov_deg.to_radians();
+        if mistakes.has(Mistake::FovFullAngle) {
+            angle.tan()
+        } else {
+            (0.5 * angle).tan()
+        }
+    };
+    let (x, y) = (sample.film.x, sample.film.y);
+    let d_cam = Vec3::new(
+        (2.0 * x - 1.0) * half(camera.hfov_deg),
+        (2.0 * y - 1.0) * half(camera.vfov_deg),
+        -1.0,
+    );
+    let lens = camera.lens;
+    let (origin, dir) = if lens.is_pinhole() {
+        (Vec3::ZERO, d_cam)
+    } else {
+        let radius = if mistakes.has(Mistake::LensRadiusUnscaled) {
+            1.0
+        } else {
+            lens.radius
+        };
+        let disk = radius * sample_uniform_disk_concentric(sample.lens);
+        let p_lens = Vec3::new(disk.x, disk.y, 0.0);
+        // The point in focus: on the plane z = -d, or (the mistake) at
+        // distance d along the pinhole ray.
+        let p_focus = if mistakes.has(Mistake::FocusOnASphere) {
+            lens.focal_distance * d_cam.normalize()
+        } else {
+            lens.focal_distance * d_cam
+        };
+        (p_lens, p_focus - p_lens)
+    };
+    Ray {
+        origin: camera.position + camera.c2w * origin,
+        dir: (camera.c2w * dir).normalize(),
+        t_min: camera.znear,
+        t_max: camera.zfar,
+    }
+}
+
+/// Whether a pixel with `stats` may stop: the course's test every `batch`
+/// samples, or a student's mistaken one.
+fn converged(adaptive: &Adaptive, stats: &LuminanceStats, mistakes: Mistakes) -> bool {
+    if !mistakes.has(Mistake::AdaptiveNotSquareRooted) {
+        return adaptive.should_stop(stats);
+    }
+    // I = 1.96 sigma / n, where sqrt(n) belongs.
+    let n = stats.n as f64;
+    let half_width = Z_95 * stats.variance().sqrt() / n;
+    stats.n % adaptive.batch.max(1) == 0
+        && stats.n >= 2
+        && half_width <= adaptive.tolerance as f64 * stats.mean()
+}
+
+/// The pixel `task` asks for, by up to `task.max_samples` camera rays,
+/// each estimated by `radiance`, stopping where `adaptive` says (see the
+/// module docs).
+pub fn raytrace_pixel(
+    camera: &Camera,
+    task: PixelTask,
+    adaptive: Option<Adaptive>,
+    mistakes: Mistakes,
+    sampler: &mut PixelSampler,
+    radiance: impl FnMut(&Ray, &mut PixelSampler) -> Rgb,
+) -> PixelEstimate {
+    let mut estimate = estimate_pixel_with(
+        task,
+        !camera.lens.is_pinhole(),
+        |sample| generate_ray(camera, sample, mistakes),
+        |stats| adaptive.is_some_and(|a| converged(&a, stats, mistakes)),
+        sampler,
+        radiance,
+    );
+    if mistakes.has(Mistake::AdaptiveCountNotUpdated) {
+        // The count stays at ns_aa: the sum is divided by it, and the
+        // rate image reads every pixel as having taken every sample.
+        let max = task.max_samples.max(1);
+        let taken = estimate.samples - estimate.rejected;
+        estimate.radiance *= taken as f32 / max as f32;
+        estimate.samples = max;
+    }
+    estimate
+}
+
+/// Renders an image as the course's `raytrace_pixel` does, with
+/// `mistakes`: [`raytrace_pixel`] for every pixel, on tiles in parallel.
+pub fn render(
+    camera: &Camera,
+    settings: &RenderSettings,
+    adaptive: Option<Adaptive>,
+    mistakes: Mistakes,
+    radiance: impl Fn(&Ray, &mut PixelSampler) -> Rgb + Sync,
+) -> Rendered {
+    let size = (settings.width, settings.height);
+    let (estimates, stats) = render_tiles(settings, |x, y, sampler| {
+        let task = PixelTask {
+            size,
+            pixel: (x, y),
+            max_samples: settings.samples_per_pixel,
+        };
+        raytrace_pixel(camera, task, adaptive, mistakes, sampler, &radiance)
+    });
+    Rendered::new(settings.width, settings.height, estimates, stats)
+}
