@@ -410,4 +410,12 @@ cargo run --release --example symptoms
 The renders are noisy the way a student's are: independent random
 numbers, the course's light sampling, no multiple importance sampling.
 What a mistake changes is what the ratio shows, beyond that noise.
+
+Not in the catalogue yet: the intersection and BVH mistakes of parts 1
+and 2 (a hit accepted outside `[min_t, max_t]`, the sphere's far root,
+permuted barycentric weights, a box test that misses rays starting
+inside, traversal that returns the first hit, `max_t` not shrunk), which
+need a student's intersector, and a few of parts 1, 3 and 5 (the field of
+view in degrees, directions not normalised or left in camera space, the
+light's cosine left out, the population variance).
 ";

@@ -306,12 +306,8 @@ impl StarterTracer {
                     mistakes::shadow_ray_without_offset(&point.hit, &sample)
                 } else if self.mistakes.has(Mistake::ShadowRayReachesLight) {
                     mistakes::shadow_ray_to_the_light(&point.hit, &sample)
-                } else if sample.distance.is_finite() {
-                    point
-                        .hit
-                        .spawn_ray_to(point.hit.p + sample.distance * sample.wi)
                 } else {
-                    point.hit.spawn_ray(sample.wi)
+                    point.hit.spawn_shadow_ray(sample.wi, sample.distance)
                 };
                 if world.intersector.occluded(&shadow) {
                     continue;

@@ -153,13 +153,7 @@ impl DirectLights {
         if f == Rgb::ZERO || sample.radiance == Rgb::ZERO {
             return Rgb::ZERO;
         }
-        let shadow = if sample.distance.is_finite() {
-            point
-                .hit
-                .spawn_ray_to(point.hit.p + sample.distance * sample.wi)
-        } else {
-            point.hit.spawn_ray(sample.wi)
-        };
+        let shadow = point.hit.spawn_shadow_ray(sample.wi, sample.distance);
         if world.intersector.occluded(&shadow) {
             return Rgb::ZERO;
         }

@@ -63,6 +63,17 @@ impl Hit {
         Ray::new(self.offset_origin(wi), wi)
     }
 
+    /// The shadow ray towards a light sample in the unit direction `wi` at
+    /// `distance` ([`Self::spawn_ray_to`] the sample's point), or along
+    /// `wi` for ever when the light is at infinity.
+    pub fn spawn_shadow_ray(&self, wi: Vec3, distance: f32) -> Ray {
+        if distance.is_finite() {
+            self.spawn_ray_to(self.p + distance * wi)
+        } else {
+            self.spawn_ray(wi)
+        }
+    }
+
     /// A (shadow) ray from the surface towards `target`, stopping just short of it.
     pub fn spawn_ray_to(&self, target: Vec3) -> Ray {
         let origin = self.offset_origin(target - self.p);

@@ -60,6 +60,12 @@ impl RectLight {
     /// A point uniform on the rectangle, seen from `p`.
     #[doc(alias = "sample_L")]
     pub fn sample_li(&self, p: Vec3, u: Vec2) -> Option<LightSample> {
+        self.sample_sided(p, u, false)
+    }
+
+    /// [`Self::sample_li`] for a rectangle that emits from its back too
+    /// when `two_sided` (the catalogue's `light-from-behind` mistake).
+    pub fn sample_sided(&self, p: Vec3, u: Vec2, two_sided: bool) -> Option<LightSample> {
         let area = self.area();
         if area.is_nan() || area <= 0.0 {
             return None;
@@ -68,7 +74,7 @@ impl RectLight {
         let point = SurfacePoint {
             q,
             normal: self.normal,
-            two_sided: false,
+            two_sided,
             radiance: self.radiance,
             area_pdf: 1.0 / area,
         };

@@ -4,9 +4,9 @@
 //! mistake is chosen.
 
 use crate::intersect::{Hit, Ray};
-use crate::lights::{LightSample, RectLight, SurfacePoint};
+use glam::{Vec2, Vec3};
 
-use glam::Vec2;
+use crate::lights::{LightSample, RectLight};
 
 /// [`super::Mistake::ShadowAcne`]: the shadow ray starts at the hit point
 /// itself with `min_t = 0`, so the surface it leaves, met again at `t`
@@ -33,19 +33,6 @@ pub fn shadow_ray_to_the_light(hit: &Hit, sample: &LightSample) -> Ray {
 /// [`super::Mistake::LightFromBehind`]: the rectangle sampled as if it
 /// emitted from both sides (its cosine taken as `|cos|`), with the light's
 /// convention as [`RectLight::sample_li`] applies it.
-pub fn two_sided_rect_sample(rect: &RectLight, p: glam::Vec3, u: Vec2) -> Option<LightSample> {
-    let area = rect.area();
-    if area.is_nan() || area <= 0.0 {
-        return None;
-    }
-    let point = SurfacePoint {
-        q: rect.center + (u.x - 0.5) * rect.dim_x + (u.y - 0.5) * rect.dim_y,
-        normal: rect.normal,
-        two_sided: true,
-        radiance: rect.radiance,
-        area_pdf: 1.0 / area,
-    };
-    let mut sample = point.seen_from(p)?;
-    sample.radiance *= rect.convention.area_factor(sample.distance);
-    Some(sample)
+pub fn two_sided_rect_sample(rect: &RectLight, p: Vec3, u: Vec2) -> Option<LightSample> {
+    rect.sample_sided(p, u, true)
 }

@@ -1,11 +1,8 @@
 //! `--course-exact`: what each lighting binary renders when asked for the
 //! image a correct course solution makes ([`crate::course`]).
 
-use std::time::Instant;
-
 use super::lighting::environment_light;
-use super::{prepare, report_render, Prepared, Result};
-use crate::bvh::WideBvhAccel;
+use super::{build_wide_bvh, prepare, report_render, Prepared, Result};
 use crate::cli::CourseArgs;
 use crate::course::{pixel, Assignment, CourseExact, StarterDirect, StarterTracer};
 use crate::mistakes::Mistake;
@@ -104,13 +101,7 @@ fn run(args: &CourseArgs, part: CoursePart, exact: CourseExact) -> Result<()> {
         return Ok(());
     }
     eprintln!("{course_line}");
-    let start = Instant::now();
-    let accel = WideBvhAccel::new(primitives);
-    println!(
-        "{}: BVH build {:.3} s",
-        scene.source,
-        start.elapsed().as_secs_f64()
-    );
+    let accel = build_wide_bvh(&scene.source, primitives);
     let world =
         World::with_options(&scene, &accel, exact.world_options()).with_environment(environment);
     let settings = RenderSettings {

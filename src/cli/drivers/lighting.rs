@@ -2,12 +2,9 @@
 //! sampling, materials and the environment light, and the full
 //! `pathtracer`. Every part takes `-e FILE` (an environment map).
 
-use std::time::Instant;
-
 use super::course::{self, CoursePart};
-use super::{prepare, report_render, write_film, Prepared, Result};
+use super::{build_wide_bvh, prepare, report_render, write_film, Prepared, Result};
 use crate::adaptive::Adaptive;
-use crate::bvh::WideBvhAccel;
 use crate::cli::args::Builtin;
 use crate::cli::CourseArgs;
 use crate::direct::{DirectHemisphere, DirectLights};
@@ -127,14 +124,7 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
             .for_each(|w| println!("plan: note: {w}"));
         return Ok(());
     }
-    let start = Instant::now();
-    // The wide SIMD BVH: the binary one's hits, faster (docs/03-bvh.md).
-    let accel = WideBvhAccel::new(primitives);
-    println!(
-        "{}: BVH build {:.3} s",
-        scene.source,
-        start.elapsed().as_secs_f64()
-    );
+    let accel = build_wide_bvh(&scene.source, primitives);
     let world =
         World::with_options(&scene, &accel, args.world_options()).with_environment(environment);
     let plan = Plan::new(&scene, &world.lights, &part.tracer, &camera.lens);

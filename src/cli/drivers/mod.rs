@@ -127,6 +127,15 @@ fn report_render(rendered: &Rendered) {
     );
 }
 
+/// The wide SIMD BVH over `primitives` (the binary one's hits, faster:
+/// docs/03-bvh.md), timed and reported under `source`.
+fn build_wide_bvh(source: &str, primitives: Primitives) -> crate::bvh::WideBvhAccel {
+    let start = std::time::Instant::now();
+    let accel = crate::bvh::WideBvhAccel::new(primitives);
+    println!("{source}: BVH build {:.3} s", start.elapsed().as_secs_f64());
+    accel
+}
+
 /// Writes the film where `-f` (or the default) says and tells where.
 fn write_film(rendered: &Rendered, args: &CourseArgs) -> Result<()> {
     let path = args.output_path();
