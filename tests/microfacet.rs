@@ -211,3 +211,33 @@ fn a_smooth_conductor_behaves_like_a_mirror() {
         }
     }
 }
+
+/// The starter's `Lambda` at `a = 1 / (alpha tan theta)` against values
+/// computed apart (Python's `math.erfc`, `math.exp`): 1.13194 at
+/// `a = 0.1`, 0.149169 at 0.3, -0.0201 at 1, where the exact `Lambda`
+/// is 2.34911, 0.523697 and 0.0251273.
+#[test]
+fn the_starters_lambda_has_pi_for_sqrt_pi() {
+    let b = pathtracer::materials::beckmann::Beckmann::new(0.5);
+    for (a, starter, exact) in [
+        (0.1, 1.131_944_7, 2.349_110_5),
+        (0.3, 0.149_168_93, 0.523_697_47),
+        (1.0, -0.020_099_772, 0.025_127_271),
+    ] {
+        // tan(theta) = 1 / (alpha a).
+        let tan = 1.0 / (0.5 * a);
+        let w = Vec3::new(tan as f32, 0.0, 1.0).normalize();
+        let got = b.starter_lambda(w);
+        assert!(
+            (got - starter).abs() < 1e-4 * starter.abs().max(0.1),
+            "a {a}: {got}"
+        );
+        let exact_got = f64::from(b.lambda(w));
+        assert!(
+            (exact_got - exact).abs() < 1e-4 * exact.max(0.1),
+            "a {a}: {exact_got}"
+        );
+    }
+    assert_eq!(b.starter_lambda(Vec3::Z), 0.0);
+    assert!(b.starter_lambda(-Vec3::Z).is_infinite());
+}

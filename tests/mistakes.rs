@@ -1,4 +1,4 @@
-//! Every mistake of parts 3 and 4 in the catalogue ([`pathtracer::mistakes`]) shows the
+//! Every mistake of parts 1, 3, 4, 5 and 8 in the catalogue ([`pathtracer::mistakes`]) shows the
 //! symptom the catalogue names: the built-in Cornell box rendered small by
 //! the course's renderer with and without it, compared by the mean
 //! luminance of the image or of a region, with its standard error from the
@@ -12,8 +12,9 @@
 mod common;
 
 use common::*;
+use glam::Vec3;
 use pathtracer::course::StarterDirect;
-use pathtracer::mistakes::Mistake;
+use pathtracer::mistakes::{Mistake, Mistakes};
 
 use StarterDirect::{Hemisphere as H, Importance as L};
 
@@ -263,5 +264,111 @@ fn adaptive_mistakes_show_in_the_sample_counts() {
     assert!(
         right.estimates.iter().any(|e| e.samples < 128),
         "no pixel stopped early"
+    );
+}
+
+/// A cheap measure of how sharp an image is, blind to most of its noise:
+/// the mean absolute difference of the display luminance (tone mapped, so
+/// that the lamp does not outweigh every other edge) of neighbouring 4 x 4
+/// pixel blocks.
+fn sharpness(image: &pathtracer::render::Rendered) -> f64 {
+    let (cols, rows) = (image.film.width / 4, image.film.height / 4);
+    let display = pathtracer::render::Film {
+        pixels: image
+            .film
+            .pixels
+            .iter()
+            .map(|&p| p.min(glam::Vec3::ONE))
+            .collect(),
+        ..image.film.clone()
+    };
+    let blocks: Vec<f64> = display
+        .block_means(cols, rows)
+        .into_iter()
+        .map(|b| pathtracer::math::luminance(pathtracer::render::tone_map(b)) as f64)
+        .collect();
+    let mut sum = 0.0;
+    for y in 0..rows {
+        for x in 1..cols {
+            let i = (y * cols + x) as usize;
+            sum += (blocks[i] - blocks[i - 1]).abs();
+        }
+    }
+    sum / (rows * (cols - 1)) as f64
+}
+
+/// `lens-radius-unscaled`: at `-b 0.02 -d 2` (focused in front of the
+/// box, 3 to 4 units from everything in it) the right image is nearly
+/// sharp (a circle of confusion of 0.01 units at the back wall, a fifth of
+/// a pixel); the mistaken lens, of radius 1, blurs it by 0.6 units, a
+/// dozen pixels, and its edges lose most of their contrast.
+#[test]
+fn an_unscaled_lens_blurs_everything() {
+    let lens = pathtracer::depth_of_field::ThinLens {
+        radius: 0.02,
+        focal_distance: 2.0,
+    };
+    let b = CourseView::new().with_lens(lens);
+    let tracer = |mistakes: &[Mistake]| starter_tracer(mistakes, L, 1, 1, true);
+    let right = sharpness(&b.render(&tracer(&[]), 256, None, 720));
+    let wrong = sharpness(&b.render(&tracer(&[Mistake::LensRadiusUnscaled]), 256, None, 721));
+    eprintln!("sharpness: right {right:.4}, lens of radius 1 {wrong:.4}");
+    assert!(wrong < 0.6 * right, "{wrong} against {right}");
+}
+
+/// `focus-on-a-sphere`: the rays of one film point meet at distance `d`
+/// along the pinhole ray instead of on the plane `z = -d`. At the image's
+/// centre the two agree; at a corner the wrong focus is nearer by the
+/// factor `cos` of the ray's angle to the axis (6 % at the course boxes'
+/// corners, under a pixel of blur at 480 x 360: an image cannot show it
+/// there, so this checks the rays).
+#[test]
+fn focus_on_a_sphere_focuses_the_corners_nearer() {
+    use pathtracer::course::pixel::generate_ray;
+    use pathtracer::raygen::CameraSample;
+    let lens = pathtracer::depth_of_field::ThinLens {
+        radius: 0.3,
+        focal_distance: 5.0,
+    };
+    let camera = pathtracer::raygen::Camera::look_at(Vec3::ZERO, -Vec3::Z, Vec3::Y, 60.0, 45.0)
+        .with_lens(lens);
+    let wrong = Mistakes::of(&[Mistake::FocusOnASphere]);
+    let meeting_depth = |film: glam::Vec2, mistakes| {
+        // Two lens points' rays, left and right: where they cross, in z.
+        let a = generate_ray(
+            &camera,
+            &CameraSample {
+                film,
+                lens: glam::Vec2::new(0.0, 0.5),
+            },
+            mistakes,
+        );
+        let b = generate_ray(
+            &camera,
+            &CameraSample {
+                film,
+                lens: glam::Vec2::new(1.0, 0.5),
+            },
+            mistakes,
+        );
+        // Solve a.o + s a.d = b.o + t b.d in x and z.
+        let det = a.dir.x * -b.dir.z + b.dir.x * a.dir.z;
+        let (dx, dz) = (b.origin.x - a.origin.x, b.origin.z - a.origin.z);
+        let s = (dx * -b.dir.z + b.dir.x * dz) / det;
+        -(a.origin.z + s * a.dir.z)
+    };
+    let centre = glam::Vec2::splat(0.5);
+    let corner = glam::Vec2::new(0.98, 0.5);
+    let right_corner = meeting_depth(corner, Mistakes::NONE);
+    let wrong_corner = meeting_depth(corner, wrong);
+    assert!((meeting_depth(centre, Mistakes::NONE) - 5.0).abs() < 1e-3);
+    assert!((meeting_depth(centre, wrong) - 5.0).abs() < 1e-3);
+    assert!((right_corner - 5.0).abs() < 1e-3, "{right_corner}");
+    // The corner ray's angle to the axis: tan = 0.96 tan(30 degrees).
+    let cos = (0.96 * 30f32.to_radians().tan()).atan().cos();
+    assert!(
+        (wrong_corner - 5.0 * cos).abs() < 1e-3,
+        "{wrong_corner} against {}",
+        5.0 * cos
     );
 }
