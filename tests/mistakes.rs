@@ -227,7 +227,8 @@ fn a_full_angle_fov_shrinks_the_scene() {
 /// stops pixels at the first check (a half-width too small by sqrt(n)),
 /// so the mean sample count drops; `adaptive-count-not-updated` reports
 /// every pixel at 128 samples and darkens those that stopped early by the
-/// share they took.
+/// share they took; `adaptive-population-variance` stops some pixels a
+/// batch early and none later.
 #[test]
 fn adaptive_mistakes_show_in_the_sample_counts() {
     let b = CourseView::new();
@@ -265,6 +266,21 @@ fn adaptive_mistakes_show_in_the_sample_counts() {
         right.estimates.iter().any(|e| e.samples < 128),
         "no pixel stopped early"
     );
+
+    // Same seed again: the population variance is the sample variance
+    // times (n - 1) / n, so no pixel stops later, and some stop a batch
+    // earlier.
+    let population = b.render(
+        &tracer(&[Mistake::AdaptivePopulationVariance]),
+        128,
+        adaptive,
+        710,
+    );
+    let pairs = population.estimates.iter().zip(&right.estimates);
+    assert!(pairs.clone().all(|(p, r)| p.samples <= r.samples));
+    let earlier = pairs.filter(|(p, r)| p.samples < r.samples).count();
+    eprintln!("population variance: {earlier} pixels stop earlier");
+    assert!(earlier > 0);
 }
 
 /// A cheap measure of how sharp an image is, blind to most of its noise:

@@ -274,10 +274,12 @@ fn environment_pdf_mistakes_bias_the_direct_light() {
     // The balls and the floor: camera rays that escape see the map itself.
     let surfaces = view.pixels_seeing(|_| true);
     let alpha = ALPHA / 2.0;
-    let right = view.mean_over(&starter_tracer(&[], L, 1, 1, false), 32, &surfaces, 600);
+    // 128 samples: the handout's texel weights leave the cells beside the
+    // sun, which the bilinear lookup lights, rarely sampled (fireflies).
+    let right = view.mean_over(&starter_tracer(&[], L, 1, 1, false), 128, &surfaces, 600);
     let no_jacobian = view.mean_over(
         &starter_tracer(&[Mistake::EnvPdfNoJacobian], L, 1, 1, false),
-        32,
+        128,
         &surfaces,
         601,
     );
@@ -291,7 +293,7 @@ fn environment_pdf_mistakes_bias_the_direct_light() {
     );
     let no_sin = view.mean_over(
         &starter_tracer(&[Mistake::EnvPdfNoSin], L, 1, 1, false),
-        32,
+        128,
         &surfaces,
         602,
     );

@@ -19,6 +19,7 @@
 //! | radiance across glass | `1 / eta^2`, eta far over near | the reciprocal convention | `GlassBSDF`, `RefractionBSDF` |
 //! | microfacet `Lambda`, `F` | exact, `F(wo.h)` | `a pi` for `a sqrt(pi)`, `F(wi.z)` | `bsdf.h`, `MicrofacetBSDF::f` |
 //! | microfacet sampling | visible normals where it pays | the half vector | handout |
+//! | environment map's sampling weights | the bilinear lookup's average over a cell | the cell's texel | `EnvironmentLight::init` |
 //! | adaptive sampling | only with `-a` | on by default (32, 0.05) once part 5 is written | `main.cpp` |
 //! | pixels that stop early | their mean | 3-2: the staff library's mean, `n / (n - 1)` of it | `libpt31.so` |
 //! | PNG | rounded | truncated, `floor(255 v)` | `HDRImageBuffer::toColor` |
@@ -27,12 +28,15 @@
 //! pixel loop and the camera, as the starter's `raytrace_pixel` and
 //! `generate_ray`, in [`pixel`].
 
+pub mod image;
 pub mod pixel;
 pub mod tracer;
 
+pub use image::{CourseSampling, CourseView};
 pub use tracer::{Lamps, StarterDirect, StarterTracer};
 
 use crate::adaptive::Adaptive;
+use crate::environment::EnvironmentWeights;
 use crate::lights::{LightChoiceRule, LightConvention};
 use crate::materials::{
     BsdfOptions, EtaScaling, FresnelModel, MicrofacetModel, MicrofacetSampling,
@@ -105,6 +109,12 @@ impl CourseExact {
         part5_written.then(Adaptive::default)
     }
 
+    /// What the environment map's importance sampling weighs a cell by:
+    /// its texel's illuminance, as the handout's `pdf_envmap`.
+    pub fn environment_weights(&self) -> EnvironmentWeights {
+        EnvironmentWeights::Texel
+    }
+
     /// How the PNG's 8-bit values are made: truncated.
     pub fn quantization(&self) -> Quantization {
         Quantization::Truncate
@@ -171,7 +181,8 @@ mod tests {
 
     /// Each item of the switch is the course's: lights, Fresnel, microfacet
     /// formulas and sampler, radiance across glass, light choice, no
-    /// casters, independent numbers, truncated PNG values, lamps by
+    /// casters, independent numbers, truncated PNG values, the environment
+    /// map's weights, lamps by
     /// assignment, adaptive sampling once part 5 is written.
     #[test]
     fn the_switch_sets_every_item_to_the_courses() {
@@ -188,6 +199,7 @@ mod tests {
         assert_eq!(o.casters, CasterRule::Off);
         assert_eq!(exact.sampler(), SamplerKind::Independent);
         assert_eq!(exact.quantization(), Quantization::Truncate);
+        assert_eq!(exact.environment_weights(), EnvironmentWeights::Texel);
         assert_eq!(exact.lamps(), Lamps::MeshFaces);
         let three_two = CourseExact {
             assignment: Assignment::PathTracer2,

@@ -33,6 +33,8 @@ use crate::sampling::PixelSampler;
 pub fn generate_ray(camera: &Camera, sample: &CameraSample, mistakes: Mistakes) -> Ray {
     let camera_mistakes = [
         Mistake::FovFullAngle,
+        Mistake::FovInDegrees,
+        Mistake::RayInCameraSpace,
         Mistake::LensRadiusUnscaled,
         Mistake::FocusOnASphere,
     ];
@@ -41,7 +43,11 @@ pub fn generate_ray(camera: &Camera, sample: &CameraSample, mistakes: Mistakes) 
     }
     // The pinhole direction through the film point, camera space, z = -1.
     let half = |fov_deg: f32| {
-        let angle = fov_deg.to_radians();
+        let angle = if mistakes.has(Mistake::FovInDegrees) {
+            fov_deg
+        } else {
+            fov_deg.to_radians()
+        };
         if mistakes.has(Mistake::FovFullAngle) {
             angle.tan()
         } else {
@@ -74,9 +80,14 @@ pub fn generate_ray(camera: &Camera, sample: &CameraSample, mistakes: Mistakes) 
         };
         (p_lens, p_focus - p_lens)
     };
+    let c2w = if mistakes.has(Mistake::RayInCameraSpace) {
+        glam::Mat3::IDENTITY
+    } else {
+        camera.c2w
+    };
     Ray {
-        origin: camera.position + camera.c2w * origin,
-        dir: (camera.c2w * dir).normalize(),
+        origin: camera.position + c2w * origin,
+        dir: (c2w * dir).normalize(),
         t_min: camera.znear,
         t_max: camera.zfar,
     }
@@ -85,12 +96,20 @@ pub fn generate_ray(camera: &Camera, sample: &CameraSample, mistakes: Mistakes) 
 /// Whether a pixel with `stats` may stop: the course's test every `batch`
 /// samples, or a student's mistaken one.
 fn converged(adaptive: &Adaptive, stats: &LuminanceStats, mistakes: Mistakes) -> bool {
-    if !mistakes.has(Mistake::AdaptiveNotSquareRooted) {
+    let square_rooted = !mistakes.has(Mistake::AdaptiveNotSquareRooted);
+    let sample_variance = !mistakes.has(Mistake::AdaptivePopulationVariance);
+    if square_rooted && sample_variance {
         return adaptive.should_stop(stats);
     }
-    // I = 1.96 sigma / n, where sqrt(n) belongs.
     let n = stats.n as f64;
-    let half_width = Z_95 * stats.variance().sqrt() / n;
+    // sigma^2 over n where n - 1 belongs: the population variance.
+    let variance = if sample_variance {
+        stats.variance()
+    } else {
+        stats.variance() * (n - 1.0) / n
+    };
+    // I = 1.96 sigma / n where sqrt(n) belongs.
+    let half_width = Z_95 * variance.sqrt() / if square_rooted { n.sqrt() } else { n };
     stats.n % adaptive.batch.max(1) == 0
         && stats.n >= 2
         && half_width <= adaptive.tolerance as f64 * stats.mean()

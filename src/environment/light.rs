@@ -22,9 +22,11 @@
 //! pole itself (`sin(theta) = 0`, a set of measure zero) no direction is
 //! sampled and the density is 0.
 //!
-//! The course weights each cell by its texel; here a cell's weight is the
-//! luminance of the *average of the bilinear lookup over the cell*
-//! ([`EnvironmentMap::cell_average`]), since the light's radiance is the
+//! The course weights each cell by its texel (the handout's `pdf_envmap`,
+//! [`EnvironmentWeights::Texel`], which `--course-exact` keeps); here a
+//! cell's weight is the luminance of the *average of the bilinear lookup
+//! over the cell* ([`EnvironmentMap::cell_average`],
+//! [`EnvironmentWeights::CellAverage`]), since the light's radiance is the
 //! bilinear lookup: a dark texel next to a bright one still shows some of
 //! its light, and a density of 0 there would make the estimator miss it
 //! (bias). Every cell where the lookup is somewhere positive has a positive
@@ -55,11 +57,26 @@ pub enum EnvironmentSampling {
     Uniform,
 }
 
+/// What a cell of the map weighs in the importance-sampling tables.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum EnvironmentWeights {
+    /// The luminance of the bilinear lookup's average over the cell: a
+    /// positive density wherever the light is (the default).
+    #[default]
+    CellAverage,
+    /// The luminance of the cell's texel, as the handout builds
+    /// `pdf_envmap` (`--course-exact`): a black texel next to a bright one
+    /// gets no samples, though the lookup shows light there.
+    Texel,
+}
+
 /// The map and the tables made from it, shared between clones.
 #[derive(Debug)]
 struct Tables {
     map: EnvironmentMap,
     distribution: Distribution2D,
+    /// What the distribution weighs each cell by.
+    weights: EnvironmentWeights,
     /// `integral L dw` over the sphere, per channel.
     radiant_integral: Rgb,
 }
@@ -72,15 +89,30 @@ pub struct EnvironmentLight {
 }
 
 impl EnvironmentLight {
-    /// The light of `map`, sampled by `sampling`; builds the 2D distribution.
+    /// The light of `map`, sampled by `sampling`; builds the 2D distribution
+    /// with the default weights.
     pub fn new(map: EnvironmentMap, sampling: EnvironmentSampling) -> Self {
+        Self::with_weights(map, sampling, EnvironmentWeights::default())
+    }
+
+    /// The light of `map`, sampled by `sampling`, its cells weighted by
+    /// `weights` (times `sin(theta)`).
+    pub fn with_weights(
+        map: EnvironmentMap,
+        sampling: EnvironmentSampling,
+        weights_by: EnvironmentWeights,
+    ) -> Self {
         let (w, h) = (map.width(), map.height());
         let mut weights = Vec::with_capacity(w * h);
         let mut radiant_integral = Rgb::ZERO;
         for j in 0..h {
             let sin_theta = (PI * (j as f32 + 0.5) / h as f32).sin();
             for i in 0..w {
-                weights.push(luminance(map.cell_average(i, j)) * sin_theta);
+                let cell = match weights_by {
+                    EnvironmentWeights::CellAverage => map.cell_average(i, j),
+                    EnvironmentWeights::Texel => map.texel(i as i64, j as i64),
+                };
+                weights.push(luminance(cell) * sin_theta);
                 radiant_integral += map.texel(i as i64, j as i64) * sin_theta;
             }
         }
@@ -89,6 +121,7 @@ impl EnvironmentLight {
         EnvironmentLight {
             tables: Arc::new(Tables {
                 distribution: Distribution2D::new(&weights, w, h),
+                weights: weights_by,
                 map,
                 radiant_integral,
             }),
@@ -99,6 +132,20 @@ impl EnvironmentLight {
     /// The map this light shows.
     pub fn map(&self) -> &EnvironmentMap {
         &self.tables.map
+    }
+
+    /// What the importance-sampling tables weigh each cell by.
+    pub fn weights(&self) -> EnvironmentWeights {
+        self.tables.weights
+    }
+
+    /// The same map with its cells weighted by `weights` (the tables made
+    /// again unless they are already so weighted).
+    pub fn reweighted(&self, weights: EnvironmentWeights) -> Self {
+        if weights == self.weights() {
+            return self.clone();
+        }
+        Self::with_weights(self.map().clone(), self.sampling, weights)
     }
 
     /// The same map sampled another way (the tables are shared).
@@ -159,5 +206,55 @@ impl EnvironmentLight {
     /// Power through a scene of radius `scene_radius`: `pi R^2 integral L dw`.
     pub fn power(&self, scene_radius: f32) -> Rgb {
         PI * scene_radius * scene_radius * self.tables.radiant_integral
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A 16 x 8 map, black but for one bright texel at `(5, 3)`.
+    fn one_bright_texel() -> EnvironmentMap {
+        let mut texels = vec![Rgb::ZERO; 16 * 8];
+        texels[3 * 16 + 5] = Rgb::splat(10.0);
+        EnvironmentMap::new("one texel", 16, 8, texels).unwrap()
+    }
+
+    /// The handout's weights: the texel's luminance times `sin(theta)`, so
+    /// the bright texel's cell takes every sample and its black
+    /// neighbour, where the bilinear lookup still shows light, none; the
+    /// default weights give the neighbour its share.
+    #[test]
+    fn texel_weights_are_the_handouts_pdf_envmap() {
+        let map = one_bright_texel();
+        let centre = |i: f32, j: f32| uv_to_direction(Vec2::new((i + 0.5) / 16.0, (j + 0.5) / 8.0));
+        let course = EnvironmentLight::with_weights(
+            map.clone(),
+            EnvironmentSampling::Importance,
+            EnvironmentWeights::Texel,
+        );
+        let ours = EnvironmentLight::new(map, EnvironmentSampling::Importance);
+        assert_eq!(course.weights(), EnvironmentWeights::Texel);
+        assert_eq!(ours.weights(), EnvironmentWeights::CellAverage);
+        // p(w) = p(u, v) / (2 pi^2 sin theta), p(u, v) = w h for the one cell.
+        let sin_theta = (PI * 3.5 / 8.0).sin();
+        let expected = 16.0 * 8.0 / (2.0 * PI * PI * sin_theta);
+        let bright = course.pdf_li(centre(5.0, 3.0));
+        assert!(
+            (bright - expected).abs() <= 1e-4 * expected,
+            "{bright} against {expected}"
+        );
+        assert_eq!(course.pdf_li(centre(6.0, 3.0)), 0.0);
+        assert!(ours.escaped_radiance(centre(5.6, 3.0)).x > 0.0);
+        assert!(ours.pdf_li(centre(6.0, 3.0)) > 0.0);
+        assert!(ours.pdf_li(centre(5.0, 3.0)) < bright);
+        // The same tables are kept when the weights do not change.
+        let again = course.reweighted(EnvironmentWeights::Texel);
+        assert!(Arc::ptr_eq(&again.tables, &course.tables));
+        assert_eq!(
+            ours.reweighted(EnvironmentWeights::Texel)
+                .pdf_li(centre(6.0, 3.0)),
+            0.0
+        );
     }
 }

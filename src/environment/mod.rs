@@ -18,6 +18,6 @@ pub mod light;
 pub mod map;
 pub mod sky;
 
-pub use light::{EnvironmentLight, EnvironmentSampling};
+pub use light::{EnvironmentLight, EnvironmentSampling, EnvironmentWeights};
 pub use map::{direction_to_uv, uv_to_direction, EnvironmentError, EnvironmentMap};
 pub use sky::builtin_sky;

@@ -171,6 +171,11 @@ impl Primitives {
         );
     }
 
+    /// The vertex normals of triangle `id` (`None` for a sphere).
+    pub fn vertex_normals(&self, id: u32) -> Option<[Vec3; 3]> {
+        self.triangle_shading.get(id as usize).map(|s| s.normals)
+    }
+
     /// The full hit record for primitive `id`, whose shape is `shape`, hit
     /// by `ray` at `hit`.
     pub fn finish_hit(&self, id: u32, shape: &Shape, ray: &Ray, hit: ShapeHit) -> Hit {

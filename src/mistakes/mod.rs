@@ -5,28 +5,33 @@
 //! is wrong, and what it looks like ([`MistakeInfo`]). A mistake lives in
 //! the course's own renderer ([`crate::course`], which `--mistake` turns
 //! on), at the line a student would get wrong, as one branch on
-//! [`Mistakes::has`]: parts 1, 5 and 8 in [`crate::course::pixel`] (the
-//! starter's `raytrace_pixel` and `generate_ray`), parts 3 and 4 in
-//! [`crate::course::tracer`], and where a mistake needs more than a
-//! changed line, in this module's files ([`direct`], [`materials`],
-//! [`environment`]), called from there. The project's own renderer has
-//! none, and costs nothing more for them. Parts 1 and 2's intersection and
-//! BVH mistakes are not in the catalogue yet. docs/13-symptoms.md shows each one beside the
-//! correct image (`cargo run --release --example symptoms`), and
-//! `tests/mistakes.rs` checks each one's symptom.
+//! [`Mistakes::has`]: the camera's and the pixel loop's (parts 1, 5 and 8)
+//! in [`crate::course::pixel`] (the starter's `raytrace_pixel` and
+//! `generate_ray`), parts 3 and 4 in [`crate::course::tracer`], and where
+//! a mistake needs more than a changed line, in this module's files
+//! ([`direct`], [`materials`], [`environment`]), called from there. Parts
+//! 1 and 2's intersection and BVH mistakes live in [`intersect`]'s
+//! [`StudentBvh`], the starter's recursive routines, which the course's
+//! renderer puts in place of the project's BVH only when one of them is
+//! chosen. The project's own renderer has none, and costs nothing more for
+//! them. docs/13-symptoms.md shows each one beside the correct image
+//! (`cargo run --release --example symptoms`), and
+//! `tests/mistakes_1_2.rs`, `tests/mistakes.rs` and `tests/mistakes_3_2.rs` check each one's symptom.
 //!
 //! To add one: a variant of [`Mistake`] and its entry in
 //! [`Mistake::info`] and [`Mistake::ALL`]; the branch where the course's
-//! renderer would go wrong; a test of its symptom (`tests/mistakes.rs`,
+//! renderer would go wrong; a test of its symptom (`tests/mistakes_1_2.rs`, `tests/mistakes.rs`,
 //! `tests/mistakes_3_2.rs`); how the gallery shows it (`showing` in
-//! `examples/symptoms.rs`), then run the gallery again.
+//! `examples/symptoms/showing.rs`), then run the gallery again.
 
 mod catalogue;
 pub mod direct;
 pub mod environment;
+pub mod intersect;
 pub mod materials;
 
 pub use direct::{shadow_ray_to_the_light, shadow_ray_without_offset, two_sided_rect_sample};
+pub use intersect::StudentBvh;
 
 use std::fmt;
 
@@ -34,8 +39,17 @@ use std::fmt;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[repr(u8)]
 pub enum Mistake {
-    // Part 1: ray generation.
+    // Part 1: ray generation and primitive intersection.
     FovFullAngle,
+    FovInDegrees,
+    RayInCameraSpace,
+    TriangleChainedComparison,
+    SphereFarRoot,
+    BarycentricsPermuted,
+    // Part 2: bounding volume hierarchy.
+    BoxMissesRaysFromInside,
+    TraversalReturnsFirstHit,
+    MaxTNotShrunk,
     // Part 3: direct lighting.
     NoCosine,
     NoPdf,
@@ -54,6 +68,7 @@ pub enum Mistake {
     // Part 5: adaptive sampling.
     AdaptiveNotSquareRooted,
     AdaptiveCountNotUpdated,
+    AdaptivePopulationVariance,
     // Part 6: mirror and glass.
     ReflectWrongAxis,
     RefractionRatioInverted,
@@ -87,8 +102,16 @@ pub struct MistakeInfo {
 
 impl Mistake {
     /// Every mistake, in the catalogue's order (by part).
-    pub const ALL: [Mistake; 27] = [
+    pub const ALL: [Mistake; 36] = [
         Mistake::FovFullAngle,
+        Mistake::FovInDegrees,
+        Mistake::RayInCameraSpace,
+        Mistake::TriangleChainedComparison,
+        Mistake::SphereFarRoot,
+        Mistake::BarycentricsPermuted,
+        Mistake::BoxMissesRaysFromInside,
+        Mistake::TraversalReturnsFirstHit,
+        Mistake::MaxTNotShrunk,
         Mistake::NoCosine,
         Mistake::NoPdf,
         Mistake::HemispherePdfOneOverPi,
@@ -104,6 +127,7 @@ impl Mistake {
         Mistake::ThroughputWithoutCosPdf,
         Mistake::AdaptiveNotSquareRooted,
         Mistake::AdaptiveCountNotUpdated,
+        Mistake::AdaptivePopulationVariance,
         Mistake::ReflectWrongAxis,
         Mistake::RefractionRatioInverted,
         Mistake::NoEtaSquared,

@@ -12,7 +12,7 @@ use crate::sampling::{PixelSampler, SamplerKind};
 pub const TILE_SIZE: u32 = 32;
 
 /// What to render and how.
-#[derive(Clone, Debug)]
+#[derive(Clone, Copy, Debug)]
 pub struct RenderSettings {
     pub width: u32,
     pub height: u32,

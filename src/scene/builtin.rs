@@ -23,21 +23,21 @@ pub const MATERIALS_BOX: &str = "built-in: materials-box";
 /// yellow.
 pub fn cornell_box() -> Scene {
     let mut builder = MeshBuilder::default();
-    let yellow = builder.material(Material::Diffuse {
-        albedo: Vec3::new(0.7, 0.65, 0.3),
-    });
-    let white = builder.material(Material::Diffuse {
-        albedo: Vec3::splat(0.6),
-    });
-    box_with_spheres(
-        builder,
-        CORNELL_BOX,
-        &[
-            (Vec3::new(-0.45, 0.3, -0.35), 0.3, yellow),
-            (Vec3::new(0.45, 0.3, 0.25), 0.3, white),
-        ],
-    )
+    let materials = builder.ball_materials();
+    let balls: Vec<_> = BALL_CENTRES
+        .into_iter()
+        .zip(materials)
+        .map(|(centre, material)| (centre, BALL_RADIUS, material))
+        .collect();
+    box_with_spheres(builder, CORNELL_BOX, &balls)
 }
+
+/// The centres of [`cornell_box`]'s balls: the yellow one left and back,
+/// the white one right and front.
+pub const BALL_CENTRES: [Vec3; 2] = [Vec3::new(-0.45, 0.3, -0.35), Vec3::new(0.45, 0.3, 0.25)];
+
+/// The radius of [`cornell_box`]'s balls.
+pub const BALL_RADIUS: f32 = 0.3;
 
 /// The Cornell box of [`cornell_box`] with the materials of assignment
 /// 3-2: a mirror sphere (left, back), a glass sphere (right, front; index
@@ -218,36 +218,29 @@ fn box_with_spheres(
 pub fn bumpy_sphere(phi_steps: u32, theta_steps: u32) -> Scene {
     let mut builder = MeshBuilder::default();
     let material = builder.material(Material::DEFAULT);
-    let index = |i: u32, j: u32| i * (theta_steps + 1) + j;
-    for i in 0..=phi_steps {
-        let p = 2.0 * PI * i as f32 / phi_steps as f32;
-        for j in 0..=theta_steps {
-            let t = PI * j as f32 / theta_steps as f32;
-            let r = 1.0
-                + 0.08 * (7.0 * t).sin() * (9.0 * p).sin()
-                + 0.03 * (23.0 * t).sin() * (31.0 * p).cos()
-                + 0.01 * (97.0 * t).cos() * (89.0 * p).sin();
-            builder.mesh.positions.push(Vec3::new(
-                r * t.sin() * p.cos(),
-                r * t.cos(),
-                r * t.sin() * p.sin(),
-            ));
-        }
-    }
-    for i in 0..phi_steps {
-        for j in 0..theta_steps {
-            if j != 0 {
-                builder.triangle(material, [index(i, j), index(i + 1, j), index(i, j + 1)]);
-            }
-            if j + 1 != theta_steps {
-                builder.triangle(
-                    material,
-                    [index(i + 1, j), index(i + 1, j + 1), index(i, j + 1)],
-                );
-            }
-        }
-    }
+    builder.sphere_grid(material, phi_steps, theta_steps, |t, p| {
+        let r = 1.0
+            + 0.08 * (7.0 * t).sin() * (9.0 * p).sin()
+            + 0.03 * (23.0 * t).sin() * (31.0 * p).cos()
+            + 0.01 * (97.0 * t).cos() * (89.0 * p).sin();
+        r * Vec3::new(t.sin() * p.cos(), t.cos(), t.sin() * p.sin())
+    });
     builder.finish("built-in: bumpy-sphere")
+}
+
+/// The Cornell box of [`cornell_box`] with its two balls made of
+/// triangles (16 x 8 cells each, as [`bumpy_sphere`] lays them out) with
+/// smooth vertex normals, where a student's barycentric interpolation of
+/// the normals shows.
+pub fn mesh_balls_box() -> Scene {
+    let mut builder = MeshBuilder::default();
+    let materials = builder.ball_materials();
+    for (centre, material) in BALL_CENTRES.into_iter().zip(materials) {
+        builder.sphere_grid(material, 16, 8, |t, p| {
+            centre + BALL_RADIUS * Vec3::new(t.sin() * p.cos(), t.cos(), t.sin() * p.sin())
+        });
+    }
+    box_with_spheres(builder, "built-in: mesh-balls-box", &[])
 }
 
 /// Collects triangles and materials, then computes the course's normals.
@@ -258,6 +251,17 @@ struct MeshBuilder {
 }
 
 impl MeshBuilder {
+    /// The balls' diffuse materials: pale yellow and white.
+    fn ball_materials(&mut self) -> [MaterialId; 2] {
+        let yellow = self.material(Material::Diffuse {
+            albedo: Vec3::new(0.7, 0.65, 0.3),
+        });
+        let white = self.material(Material::Diffuse {
+            albedo: Vec3::splat(0.6),
+        });
+        [yellow, white]
+    }
+
     fn material(&mut self, m: Material) -> MaterialId {
         self.materials.push(m);
         (self.materials.len() - 1) as MaterialId
@@ -266,6 +270,41 @@ impl MeshBuilder {
     fn triangle(&mut self, material: MaterialId, vertices: [u32; 3]) {
         self.mesh.triangles.push(vertices);
         self.mesh.materials.push(material);
+    }
+
+    /// A closed surface over a grid of `phi_steps` in `p` over `[0, 2 pi]`
+    /// and `theta_steps` in `t` over `[0, pi]`, vertices `point(t, p)`.
+    /// Cell `(i, j)` gives `(v[i,j], v[i+1,j], v[i,j+1])` unless `j` is
+    /// the first row and `(v[i+1,j], v[i+1,j+1], v[i,j+1])` unless it is
+    /// the last, so no triangle degenerates at the poles:
+    /// `2 phi_steps (theta_steps - 1)` triangles.
+    fn sphere_grid(
+        &mut self,
+        material: MaterialId,
+        phi_steps: u32,
+        theta_steps: u32,
+        point: impl Fn(f32, f32) -> Vec3,
+    ) {
+        let base = self.mesh.positions.len() as u32;
+        let index = |i: u32, j: u32| base + i * (theta_steps + 1) + j;
+        for i in 0..=phi_steps {
+            let p = 2.0 * PI * i as f32 / phi_steps as f32;
+            for j in 0..=theta_steps {
+                let t = PI * j as f32 / theta_steps as f32;
+                self.mesh.positions.push(point(t, p));
+            }
+        }
+        for i in 0..phi_steps {
+            for j in 0..theta_steps {
+                if j != 0 {
+                    self.triangle(material, [index(i, j), index(i + 1, j), index(i, j + 1)]);
+                }
+                if j + 1 != theta_steps {
+                    let cell = [index(i + 1, j), index(i + 1, j + 1), index(i, j + 1)];
+                    self.triangle(material, cell);
+                }
+            }
+        }
     }
 
     /// Two triangles over four corners given in order around the quad.

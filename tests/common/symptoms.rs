@@ -4,17 +4,16 @@
 
 use pathtracer::adaptive::Adaptive;
 use pathtracer::bvh::BvhAccel;
-use pathtracer::course::{pixel, Assignment, CourseExact, Lamps, StarterDirect, StarterTracer};
+use pathtracer::course::{self, Assignment, CourseExact, Lamps, StarterDirect, StarterTracer};
 use pathtracer::depth_of_field::ThinLens;
 use pathtracer::environment::EnvironmentLight;
 use pathtracer::intersect::{Intersector, Primitives};
 use pathtracer::math::luminance;
-use pathtracer::mistakes::{Mistake, Mistakes};
+use pathtracer::mistakes::{Mistake, Mistakes, StudentBvh};
 use pathtracer::raygen::Camera;
 use pathtracer::render::{pixel_ray, RenderSettings, Rendered};
 use pathtracer::sampling::SamplerKind;
 use pathtracer::scene::{builtin, Scene};
-use pathtracer::world::World;
 
 use super::stats::z_two_sided;
 
@@ -36,6 +35,7 @@ pub struct CourseView {
     scene: Scene,
     camera: Camera,
     accel: BvhAccel,
+    student_bvh: bool,
 }
 
 impl CourseView {
@@ -84,6 +84,7 @@ impl CourseView {
             accel: BvhAccel::new(primitives),
             scene,
             camera,
+            student_bvh: false,
         }
     }
 
@@ -143,8 +144,11 @@ impl CourseView {
         let exact = CourseExact {
             assignment: Assignment::PathTracer1,
         };
-        let world = World::with_options(&self.scene, &self.accel, exact.world_options())
-            .with_environment(self.environment.clone());
+        let view = course::CourseView {
+            scene: &self.scene,
+            camera: &self.camera,
+            environment: self.environment.as_ref(),
+        };
         let settings = RenderSettings {
             width: WIDTH,
             height: HEIGHT,
@@ -154,13 +158,20 @@ impl CourseView {
             sampler: SamplerKind::Independent,
             progress: false,
         };
-        pixel::render(
-            &self.camera,
-            &settings,
-            adaptive,
-            tracer.mistakes,
-            |ray, sampler| tracer.radiance(&world, ray, sampler),
-        )
+        let sampling = course::CourseSampling { settings, adaptive };
+        if self.student_bvh {
+            let student = StudentBvh::new(&self.accel.primitives, Mistakes::NONE);
+            return exact.render(view, &student, tracer, &sampling);
+        }
+        exact.render(view, &self.accel, tracer, &sampling)
+    }
+
+    /// The same view traced by a student's BVH whatever the mistakes
+    /// ([`StudentBvh`], Möller and Trumbore's test), so that a mistake of
+    /// parts 1 and 2 is compared with the same intersector without it.
+    pub fn on_student_bvh(mut self) -> Self {
+        self.student_bvh = true;
+        self
     }
 
     /// The mean luminance of `pixels` rendered by `tracer` at `spp`.

@@ -4,12 +4,13 @@
 use super::lighting::environment_light;
 use super::{build_wide_bvh, prepare, report_render, Prepared, Result};
 use crate::cli::CourseArgs;
-use crate::course::{pixel, Assignment, CourseExact, StarterDirect, StarterTracer};
+use crate::course::{
+    Assignment, CourseExact, CourseSampling, CourseView, StarterDirect, StarterTracer,
+};
 use crate::mistakes::Mistake;
 use crate::render::rendered::rate_image_path;
-use crate::render::{write_image_quantized, RenderSettings};
+use crate::render::write_image_quantized;
 use crate::scene::info::describe;
-use crate::world::World;
 
 /// What a binary is, as far as the course's image is concerned.
 #[derive(Clone, Copy, Debug)]
@@ -102,25 +103,23 @@ fn run(args: &CourseArgs, part: CoursePart, exact: CourseExact) -> Result<()> {
     }
     eprintln!("{course_line}");
     let accel = build_wide_bvh(&scene.source, primitives);
-    let world =
-        World::with_options(&scene, &accel, exact.world_options()).with_environment(environment);
-    let settings = RenderSettings {
-        sampler: exact.sampler(),
-        ..args.render_settings()
+    let view = CourseView {
+        scene: &scene,
+        camera: &camera,
+        environment: environment.as_ref(),
     };
-    let mut rendered = pixel::render(&camera, &settings, adaptive, tracer.mistakes, |ray, s| {
-        tracer.radiance(&world, ray, s)
-    });
-    if adaptive.is_some() {
-        exact.apply_staff_early_stop(&mut rendered, settings.samples_per_pixel);
-    }
+    let sampling = CourseSampling {
+        settings: args.render_settings(),
+        adaptive,
+    };
+    let rendered = exact.render(view, &accel, &tracer, &sampling);
     report_render(&rendered);
     let path = args.output_path();
     write_image_quantized(&rendered.film, &path, exact.quantization())?;
     println!("wrote {}", path.display());
     if part.rate_image {
         let rate = rate_image_path(&path);
-        rendered.write_rate_image(settings.samples_per_pixel, &rate)?;
+        rendered.write_rate_image(sampling.settings.samples_per_pixel, &rate)?;
         println!("wrote {}", rate.display());
     }
     Ok(())
