@@ -33,6 +33,7 @@
 
 pub mod adaptive;
 pub mod bvh;
+pub mod check;
 pub mod cli;
 pub mod course;
 pub mod depth_of_field;

@@ -45,11 +45,7 @@ fn render(staged: &Staged, how: &Showing, mistakes: Mistakes, threads: usize) ->
         assignment: Assignment::PathTracer1,
     };
     let tracer = StarterTracer {
-        direct: if how.hemisphere {
-            StarterDirect::Hemisphere
-        } else {
-            StarterDirect::Importance
-        },
+        direct: StarterDirect::from_hemisphere(how.hemisphere),
         light_samples: how.light_samples,
         max_depth: how.max_depth,
         accumulate: how.accumulate,

@@ -2,6 +2,7 @@
 //! binaries call (load the scene, print `--info`, render, write, report).
 
 pub mod args;
+pub mod check;
 pub mod drivers;
 pub mod settings;
 pub mod values;

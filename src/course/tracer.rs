@@ -56,6 +56,17 @@ pub enum StarterDirect {
     Importance,
 }
 
+impl StarterDirect {
+    /// The estimator `-H` (`hemisphere`) asks for.
+    pub fn from_hemisphere(hemisphere: bool) -> Self {
+        if hemisphere {
+            StarterDirect::Hemisphere
+        } else {
+            StarterDirect::Importance
+        }
+    }
+}
+
 /// What the camera, mirrors, glass and `-H` see of a lamp.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Lamps {

@@ -11,6 +11,7 @@ pub mod collada;
 pub mod course_files;
 pub mod error;
 pub mod export;
+pub mod export_scene;
 pub mod info;
 pub mod model;
 pub mod normals;

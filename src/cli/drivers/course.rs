@@ -63,11 +63,7 @@ fn run(args: &CourseArgs, part: CoursePart, exact: CourseExact) -> Result<()> {
     } = prepare(args)?;
     let environment = environment_light(args)?;
     let tracer = StarterTracer {
-        direct: if args.hemisphere {
-            StarterDirect::Hemisphere
-        } else {
-            StarterDirect::Importance
-        },
+        direct: StarterDirect::from_hemisphere(args.hemisphere),
         light_samples: args.light_samples,
         max_depth: if part.direct_only {
             1

@@ -1,0 +1,187 @@
+//! The checks: per part, the course's flags that isolate it, and the
+//! reference renders of the same flags by the course's renderer
+//! ([`CourseExact::render`]), with or without a catalogued mistake.
+//!
+//! Every check renders at [`SIZE`] with fewer than 32 samples per pixel,
+//! so that adaptive sampling, on by default in a binary whose part 5 is
+//! written, never stops a pixel (its test runs every 32 samples).
+
+use crate::bvh::WideBvhAccel;
+use crate::course::{
+    Assignment, CourseExact, CourseSampling, CourseView, Lamps, StarterDirect, StarterTracer,
+};
+use crate::intersect::Primitives;
+use crate::mistakes::{Mistake, Mistakes};
+use crate::raygen::Camera;
+use crate::render::{tone_map, RenderSettings};
+use crate::sampling::SamplerKind;
+use crate::scene::Scene;
+
+/// The image size of every check (the course frames smaller sizes as it
+/// frames 480 x 360, zoomed in; the reference frames them alike).
+pub const SIZE: (u32, u32) = (128, 96);
+
+/// One check: a setting of the course's flags that isolates a part.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Check {
+    pub part: u8,
+    /// Its name in the table.
+    pub name: &'static str,
+    /// The starter function it exercises most.
+    pub function: &'static str,
+    /// `-H`.
+    pub hemisphere: bool,
+    /// `-l`.
+    pub light_samples: u32,
+    /// `-m`.
+    pub max_depth: u32,
+    /// `-o 1` (true) or `-o 0`; `-o 0` needs a binary that has the flag.
+    pub accumulate: bool,
+    /// `-s`.
+    pub spp: u32,
+}
+
+/// The battery: the checks of `parts` (all written parts when empty).
+pub fn battery(parts: &[u8]) -> Vec<Check> {
+    let direct = Check {
+        part: 3,
+        name: "direct light, uniform hemisphere (-H -m 1)",
+        function: "PathTracer::estimate_direct_lighting_hemisphere",
+        hemisphere: true,
+        light_samples: 1,
+        max_depth: 1,
+        accumulate: true,
+        spp: 16,
+    };
+    let all = [
+        direct,
+        Check {
+            name: "direct light, light sampling (-l 4 -m 1)",
+            function: "PathTracer::estimate_direct_lighting_importance",
+            hemisphere: false,
+            light_samples: 4,
+            spp: 8,
+            ..direct
+        },
+        Check {
+            part: 4,
+            name: "global illumination (-m 4)",
+            function: "PathTracer::at_least_one_bounce_radiance",
+            hemisphere: false,
+            max_depth: 4,
+            ..direct
+        },
+        Check {
+            part: 4,
+            name: "the second bounce alone (-m 2 -o 0)",
+            function: "PathTracer::at_least_one_bounce_radiance",
+            hemisphere: false,
+            max_depth: 2,
+            accumulate: false,
+            ..direct
+        },
+    ];
+    all.into_iter()
+        .filter(|c| parts.is_empty() || parts.contains(&c.part))
+        .collect()
+}
+
+impl Check {
+    /// The course's flags for this check (without `-f` and the scene).
+    pub fn flags(&self, threads: usize) -> Vec<String> {
+        let mut flags = vec![
+            "-t".to_string(),
+            threads.to_string(),
+            "-s".into(),
+            self.spp.to_string(),
+            "-l".into(),
+            self.light_samples.to_string(),
+            "-m".into(),
+            self.max_depth.to_string(),
+            "-r".into(),
+            SIZE.0.to_string(),
+            SIZE.1.to_string(),
+        ];
+        if self.hemisphere {
+            flags.push("-H".into());
+        }
+        if !self.accumulate {
+            flags.extend(["-o".to_string(), "0".to_string()]);
+        }
+        flags
+    }
+
+    /// The mistakes that can show in this check: those of its part and of
+    /// the parts before it, which every render goes through (part 5's
+    /// change nothing below 32 samples).
+    pub fn suspects(&self) -> Vec<Mistake> {
+        Mistake::ALL
+            .into_iter()
+            .filter(|m| {
+                let part = m.info().part;
+                part <= self.part && part != 5
+            })
+            .collect()
+    }
+}
+
+/// A scene ready for the course's renderer at [`SIZE`].
+pub struct Stage {
+    scene: Scene,
+    camera: Camera,
+    accel: WideBvhAccel,
+}
+
+impl Stage {
+    pub fn new(scene: Scene) -> Self {
+        let primitives = Primitives::from_scene(&scene);
+        let camera = Camera::course_placement(&scene.camera, &primitives.bounds(), SIZE.0, SIZE.1);
+        Stage {
+            accel: WideBvhAccel::new(primitives),
+            scene,
+            camera,
+        }
+    }
+
+    /// The 8-bit image a correct course solution (with `mistakes`) renders
+    /// for `check` with `seed`, as its PNG holds it (three bytes a pixel).
+    pub fn render(&self, check: &Check, mistakes: Mistakes, seed: u64, threads: usize) -> Vec<u8> {
+        let exact = CourseExact {
+            assignment: Assignment::PathTracer1,
+        };
+        let tracer = StarterTracer {
+            direct: StarterDirect::from_hemisphere(check.hemisphere),
+            light_samples: check.light_samples,
+            max_depth: check.max_depth,
+            accumulate: check.accumulate,
+            lamps: Lamps::MeshFaces,
+            mistakes,
+        };
+        let view = CourseView {
+            scene: &self.scene,
+            camera: &self.camera,
+            environment: None,
+        };
+        let sampling = CourseSampling {
+            settings: RenderSettings {
+                width: SIZE.0,
+                height: SIZE.1,
+                samples_per_pixel: check.spp,
+                threads: Some(threads),
+                seed,
+                sampler: SamplerKind::Independent,
+                progress: false,
+            },
+            adaptive: None,
+        };
+        let rendered = exact.render(view, &self.accel, &tracer, &sampling);
+        let quantization = exact.quantization();
+        rendered
+            .film
+            .pixels
+            .iter()
+            .flat_map(|&p| tone_map(p).to_array())
+            .map(|v| quantization.apply(v))
+            .collect()
+    }
+}

@@ -1,0 +1,91 @@
+//! `check`: runs a student's own `pathtracer` through the course's command
+//! line, holds each image against what a correct course solution renders
+//! at the same flags, and where one differs, names the catalogued mistakes
+//! ([`crate::mistakes`]) whose images fit it.
+//!
+//! - [`student`]: running the binary (time-out, its own working folder,
+//!   its image read back);
+//! - [`battery`]: the checks, one setting of the flags each, and the
+//!   course's renders of them;
+//! - [`stats`]: the decision, against the distribution of a correct
+//!   solution's images (false alarms at most [`ALPHA`] per battery);
+//! - [`verdict`]: what differs and where, and which mistakes fit.
+//!
+//! The scene is the course's `CBspheres_lambertian.dae` where one is found
+//! (`--scenes DIR`, else `CS184_SCENES`), else the project's own Cornell
+//! box written in the course's dialect
+//! ([`crate::scene::export_scene`]) into the output folder.
+
+pub mod battery;
+pub mod stats;
+pub mod student;
+pub mod verdict;
+
+use std::path::{Path, PathBuf};
+
+use crate::scene::{self, builtin, Scene};
+
+pub use battery::{battery, Check, Stage};
+pub use student::{Capabilities, RunError, Student};
+pub use verdict::{judge, CheckResult, Outcome, Suspect};
+
+/// The chance that a correct renderer fails one or more checks of a full
+/// battery: each of its `n` checks is decided at `ALPHA / n`.
+pub const ALPHA: f64 = 0.01;
+
+/// The course scene the checks prefer.
+pub const COURSE_SCENE: &str = "CBspheres_lambertian.dae";
+
+/// The scene file to give the student and the scene as this project loads
+/// it: the course's from `scenes` (or `CS184_SCENES`) when there, else
+/// the built-in Cornell box written to `out/scenes/cornell-box.dae`.
+pub fn scene_for_checks(scenes: Option<&Path>, out: &Path) -> Result<(PathBuf, Scene), String> {
+    let from_env = std::env::var_os("CS184_SCENES").map(PathBuf::from);
+    if let Some(dir) = scenes.map(Path::to_path_buf).or(from_env) {
+        let path = dir.join(COURSE_SCENE);
+        if path.exists() {
+            let loaded = scene::load(&path).map_err(|e| e.to_string())?;
+            return Ok((path, loaded));
+        }
+    }
+    let folder = out.join("scenes");
+    std::fs::create_dir_all(&folder).map_err(|e| format!("{}: {e}", folder.display()))?;
+    let path = folder.join("cornell-box.dae");
+    let mut text = Vec::new();
+    scene::export_scene::write_scene_dae(&builtin::cornell_box(), &mut text)
+        .map_err(|e| e.to_string())?;
+    std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
+    let loaded = scene::load(&path).map_err(|e| e.to_string())?;
+    Ok((path, loaded))
+}
+
+/// The summary table: part, check, verdict, the likely mistake and the
+/// starter function to look at.
+pub fn table(results: &[CheckResult]) -> String {
+    let mut text = format!(
+        "{:<4} {:<44} {:<8} {:<34} {}\n",
+        "part", "check", "verdict", "likely mistake", "look at"
+    );
+    for r in results {
+        let (verdict, mistake, function) = match &r.outcome {
+            Outcome::Pass { .. } => ("pass", String::new(), String::new()),
+            Outcome::Fail { suspects, .. } => {
+                let best = suspects.iter().find(|s| s.fits);
+                (
+                    "FAIL",
+                    best.map_or("none known fits".into(), |s| s.mistake.to_string()),
+                    best.map_or(r.check.function.to_string(), |s| {
+                        s.mistake.info().function.to_string()
+                    }),
+                )
+            }
+            Outcome::Skipped(why) => ("skipped", why.clone(), String::new()),
+            Outcome::Error(why) => ("error", why.clone(), String::new()),
+        };
+        text += &format!(
+            "{:<4} {:<44} {:<8} {:<34} {}\n",
+            r.check.part, r.check.name, verdict, mistake, function
+        );
+    }
+    text
+}

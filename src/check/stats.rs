@@ -1,0 +1,215 @@
+//! How a student's image is judged against the course's.
+//!
+//! A student's PNG is one noisy render, tone mapped and cut to 8 bits. The
+//! reference is not one image but the *distribution* of the images a
+//! correct solution renders at the same flags: [`NullModel`] renders `K`
+//! of them ([`super::battery::Stage::render`], independent seeds) through
+//! the same tone map and truncation, and keeps, per 8 x 8 pixel block and
+//! colour channel (a *cell*), the mean display value `mu` and the variance
+//! `s^2` of one image's block mean (the pixels' variances over the `K`
+//! renders, summed over the block, over `n^2`: pixels are independent).
+//!
+//! A student's cell value `x` then gives
+//!
+//! ```text
+//! z = max(0, |x - mu| - tau mu) / sqrt(s^2 (1 + 1/K))
+//! ```
+//!
+//! (`tau` = [`TOLERANCE`] forgives a systematic difference too small to
+//! matter, such as rounding against truncation), and the image passes when
+//! `sum z^2` over the `C` cells stays below the chi-square quantile of `C`
+//! degrees of freedom at `1 - alpha` (Wilson and Hilferty's approximation,
+//! 1931): under a correct renderer each `z^2` is at most a chi-square of
+//! one degree, so it fails with probability at most `alpha`.
+
+use libm::erfc;
+
+use super::student::StudentImage;
+
+/// Block side in pixels.
+pub const BLOCK: u32 = 8;
+
+/// The relative difference of a cell's display value forgiven as too
+/// small to matter: 1 % of display (about 2 % of radiance).
+pub const TOLERANCE: f64 = 0.01;
+
+/// The distribution of a correct solution's cells.
+#[derive(Clone, Debug)]
+pub struct NullModel {
+    pub width: u32,
+    pub height: u32,
+    /// Per cell: the mean display value and the variance of one render's.
+    pub mean: Vec<f64>,
+    pub variance: Vec<f64>,
+    /// Renders it was made of.
+    pub renders: usize,
+}
+
+/// Per cell, the block mean of `rgb` (8-bit, three channels), in `[0, 1]`.
+pub fn cells(width: u32, height: u32, rgb: &[u8]) -> Vec<f64> {
+    let (bw, bh) = (width.div_ceil(BLOCK), height.div_ceil(BLOCK));
+    let mut sums = vec![0.0; (bw * bh * 3) as usize];
+    let mut counts = vec![0.0; (bw * bh) as usize];
+    for y in 0..height {
+        for x in 0..width {
+            let b = ((y / BLOCK) * bw + x / BLOCK) as usize;
+            counts[b] += 1.0;
+            for c in 0..3 {
+                sums[3 * b + c] += rgb[3 * (y * width + x) as usize + c] as f64 / 255.0;
+            }
+        }
+    }
+    sums.iter()
+        .enumerate()
+        .map(|(i, s)| s / counts[i / 3])
+        .collect()
+}
+
+impl NullModel {
+    /// The model of `renders` (8-bit images of `width` x `height`).
+    pub fn new(width: u32, height: u32, renders: &[Vec<u8>]) -> Self {
+        let k = renders.len();
+        assert!(k >= 2, "a null model needs two renders or more");
+        let n = (width * height * 3) as usize;
+        // Per pixel channel: mean and variance over the renders.
+        let mut pixel_var = vec![0.0; n];
+        for (i, v) in pixel_var.iter_mut().enumerate() {
+            let values = renders.iter().map(|r| r[i] as f64 / 255.0);
+            let mean = values.clone().sum::<f64>() / k as f64;
+            *v = values.map(|x| (x - mean) * (x - mean)).sum::<f64>() / (k - 1) as f64;
+        }
+        let per_render: Vec<Vec<f64>> = renders.iter().map(|r| cells(width, height, r)).collect();
+        let c = per_render[0].len();
+        let mean = (0..c)
+            .map(|i| per_render.iter().map(|r| r[i]).sum::<f64>() / k as f64)
+            .collect();
+        // sum of the pixels' variances over n^2, per cell.
+        let bw = width.div_ceil(BLOCK);
+        let mut variance = vec![0.0; c];
+        let mut counts = vec![0.0; c];
+        for y in 0..height {
+            for x in 0..width {
+                let b = ((y / BLOCK) * bw + x / BLOCK) as usize;
+                for ch in 0..3 {
+                    variance[3 * b + ch] += pixel_var[3 * (y * width + x) as usize + ch];
+                    counts[3 * b + ch] += 1.0;
+                }
+            }
+        }
+        for (v, n) in variance.iter_mut().zip(&counts) {
+            *v /= n * n;
+        }
+        NullModel {
+            width,
+            height,
+            mean,
+            variance,
+            renders: k,
+        }
+    }
+
+    /// Each cell's `z` (see the module docs) of the cells `x`, measured
+    /// against `mean` (this model's, or a mistake's).
+    pub fn z_scores(&self, x: &[f64], mean: &[f64], mean_renders: usize) -> Vec<f64> {
+        let inflate = 1.0 + 1.0 / mean_renders as f64;
+        x.iter()
+            .zip(mean)
+            .zip(&self.variance)
+            .map(|((&x, &mu), &s2)| {
+                let excess = ((x - mu).abs() - TOLERANCE * mu).max(0.0);
+                if excess == 0.0 {
+                    0.0
+                } else if s2 > 0.0 {
+                    excess / (s2 * inflate).sqrt()
+                } else {
+                    // No noise at all (a clipped or black cell), and a real difference.
+                    f64::INFINITY
+                }
+            })
+            .collect()
+    }
+}
+
+/// The chi-square quantile of `dof` degrees of freedom at `1 - alpha`
+/// (Wilson and Hilferty's cube-root normal approximation).
+pub fn chi_square_quantile(dof: f64, alpha: f64) -> f64 {
+    let z = normal_upper_quantile(alpha);
+    let a = 2.0 / (9.0 * dof);
+    dof * (1.0 - a + z * a.sqrt()).powi(3)
+}
+
+/// `z` with `P(Z > z) = p` for a standard normal `Z`, by bisection on
+/// `erfc` (to 1e-10).
+pub fn normal_upper_quantile(p: f64) -> f64 {
+    let (mut lo, mut hi) = (-40.0, 40.0);
+    while hi - lo > 1e-10 {
+        let mid = 0.5 * (lo + hi);
+        if 0.5 * erfc(mid / std::f64::consts::SQRT_2) > p {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+/// The cells of a student's image.
+pub fn student_cells(image: &StudentImage) -> Vec<f64> {
+    cells(image.width, image.height, &image.rgb)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn quantiles_match_tables() {
+        assert!((normal_upper_quantile(0.025) - 1.959964).abs() < 1e-5);
+        assert!((normal_upper_quantile(1e-4) - 3.719016).abs() < 1e-5);
+        // chi-square(100) at 0.99: 135.807 (tables).
+        assert!((chi_square_quantile(100.0, 0.01) - 135.807).abs() < 0.2);
+        // chi-square(500) at 0.999: 603.446.
+        assert!((chi_square_quantile(500.0, 0.001) - 603.446).abs() < 0.5);
+    }
+
+    #[test]
+    fn cells_average_blocks_per_channel() {
+        // 16 x 8: two blocks; the left red at 255, the right blue at 51.
+        let mut rgb = vec![0u8; 16 * 8 * 3];
+        for y in 0..8 {
+            for x in 0..16 {
+                let i = 3 * (y * 16 + x);
+                if x < 8 {
+                    rgb[i] = 255;
+                } else {
+                    rgb[i + 2] = 51;
+                }
+            }
+        }
+        let expected = [1.0, 0.0, 0.0, 0.0, 0.0, 0.2];
+        let found = cells(16, 8, &rgb);
+        assert_eq!(found.len(), expected.len());
+        assert!(
+            found
+                .iter()
+                .zip(expected)
+                .all(|(a, b)| (a - b).abs() < 1e-12),
+            "{found:?}"
+        );
+    }
+
+    #[test]
+    fn the_null_models_variance_is_that_of_a_block_mean() {
+        // Two renders of an 8 x 8 image, every value 0 in one and 2/255 in
+        // the other: per value variance (1/255)^2 * 2, a block mean's the
+        // same over 64 (the sum of 64 variances over 64^2).
+        let a = vec![0u8; 8 * 8 * 3];
+        let b = vec![2u8; 8 * 8 * 3];
+        let model = NullModel::new(8, 8, &[a, b]);
+        let per_value = 2.0 * (1.0f64 / 255.0).powi(2);
+        for v in &model.variance {
+            assert!((v - per_value / 64.0).abs() < 1e-15);
+        }
+        assert!(model.mean.iter().all(|m| (m - 1.0 / 255.0).abs() < 1e-15));
+    }
+}

@@ -1,0 +1,186 @@
+//! Running a student's binary through the course's command line: with a
+//! time-out, in a working folder of its own (a 3-2 binary writes
+//! `probability_debug.png` where it runs), its image read back and checked
+//! for size. Whatever goes wrong becomes a [`RunError`] that says so in one
+//! line; nothing panics.
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+/// A student's `pathtracer` binary.
+#[derive(Clone, Debug)]
+pub struct Student {
+    pub binary: PathBuf,
+    /// Where it runs and writes its images.
+    pub work: PathBuf,
+    /// How long one run may take.
+    pub timeout: Duration,
+}
+
+/// What the binary says it supports (from `-h`, whose usage lists the
+/// flags; a binary that prints nothing is assumed to have the 2023 set).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Capabilities {
+    /// `-o 0|1` (later years only).
+    pub accumulate_flag: bool,
+}
+
+/// Why a run gave no image to compare.
+#[derive(Clone, Debug, PartialEq)]
+pub enum RunError {
+    Missing(PathBuf),
+    NotExecutable(PathBuf, String),
+    TimedOut(Duration),
+    Crashed(String),
+    NoImage(PathBuf),
+    Unreadable(PathBuf, String),
+    WrongSize {
+        expected: (u32, u32),
+        found: (u32, u32),
+    },
+}
+
+impl fmt::Display for RunError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            RunError::Missing(p) => write!(f, "{}: no such file", p.display()),
+            RunError::NotExecutable(p, e) => write!(f, "{}: cannot run it: {e}", p.display()),
+            RunError::TimedOut(t) => write!(f, "no image within {} s (stopped)", t.as_secs()),
+            RunError::Crashed(how) => write!(f, "it crashed: {how}"),
+            RunError::NoImage(p) => write!(f, "it exited without writing {}", p.display()),
+            RunError::Unreadable(p, e) => {
+                write!(f, "{}: not a PNG it could read: {e}", p.display())
+            }
+            RunError::WrongSize { expected, found } => write!(
+                f,
+                "its image is {}x{}, the command asked for {}x{}",
+                found.0, found.1, expected.0, expected.1
+            ),
+        }
+    }
+}
+
+/// An 8-bit RGB image as the binary wrote it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StudentImage {
+    pub width: u32,
+    pub height: u32,
+    /// Row-major, row 0 at the top, three bytes a pixel.
+    pub rgb: Vec<u8>,
+}
+
+impl Student {
+    /// Runs the binary with `args` and waits at most [`Student::timeout`];
+    /// its output is captured (kept for a crash's message).
+    fn run(&self, args: &[String]) -> Result<std::process::Output, RunError> {
+        if !self.binary.exists() {
+            return Err(RunError::Missing(self.binary.clone()));
+        }
+        let mut child = Command::new(&self.binary)
+            .args(args)
+            .current_dir(&self.work)
+            .stdin(Stdio::null())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .map_err(|e| RunError::NotExecutable(self.binary.clone(), e.to_string()))?;
+        // Drain the pipes on threads, so a chatty binary cannot block.
+        let drain = |pipe: Option<Box<dyn std::io::Read + Send>>| {
+            std::thread::spawn(move || {
+                let mut bytes = Vec::new();
+                if let Some(mut pipe) = pipe {
+                    let _ = pipe.read_to_end(&mut bytes);
+                }
+                bytes
+            })
+        };
+        let out = drain(child.stdout.take().map(|p| Box::new(p) as _));
+        let err = drain(child.stderr.take().map(|p| Box::new(p) as _));
+        let start = Instant::now();
+        let status = loop {
+            match child.try_wait() {
+                Ok(Some(status)) => break status,
+                Ok(None) if start.elapsed() < self.timeout => {
+                    std::thread::sleep(Duration::from_millis(20))
+                }
+                _ => {
+                    let _ = child.kill();
+                    let _ = child.wait();
+                    return Err(RunError::TimedOut(self.timeout));
+                }
+            }
+        };
+        Ok(std::process::Output {
+            status,
+            stdout: out.join().unwrap_or_default(),
+            stderr: err.join().unwrap_or_default(),
+        })
+    }
+
+    /// What the binary supports, from its usage text.
+    pub fn capabilities(&self) -> Result<Capabilities, RunError> {
+        let output = self.run(&["-h".to_string()])?;
+        let text =
+            String::from_utf8_lossy(&output.stdout) + String::from_utf8_lossy(&output.stderr);
+        let says = |flag: &str| {
+            text.split_whitespace()
+                .any(|w| w.trim_end_matches(',') == flag)
+        };
+        Ok(Capabilities {
+            accumulate_flag: says("-o"),
+        })
+    }
+
+    /// Renders with `args` (the course's flags, the scene last) into
+    /// `image` (a name inside the working folder) of size `size`.
+    pub fn render(
+        &self,
+        args: &[String],
+        image: &str,
+        size: (u32, u32),
+    ) -> Result<StudentImage, RunError> {
+        let path = self.work.join(image);
+        let _ = std::fs::remove_file(&path);
+        let mut all = vec!["-f".to_string(), image.to_string()];
+        all.extend_from_slice(args);
+        let output = self.run(&all)?;
+        if !output.status.success() {
+            let last = String::from_utf8_lossy(&output.stderr);
+            let line = last
+                .lines()
+                .rev()
+                .find(|l| !l.trim().is_empty())
+                .unwrap_or("");
+            return Err(RunError::Crashed(format!(
+                "{} ({})",
+                output.status,
+                line.trim()
+            )));
+        }
+        read_png(&path, size)
+    }
+}
+
+/// The PNG at `path`, which must be `size`.
+pub fn read_png(path: &Path, size: (u32, u32)) -> Result<StudentImage, RunError> {
+    if !path.exists() {
+        return Err(RunError::NoImage(path.to_path_buf()));
+    }
+    let decoded = image::open(path)
+        .map_err(|e| RunError::Unreadable(path.to_path_buf(), e.to_string()))?
+        .to_rgb8();
+    let found = decoded.dimensions();
+    if found != size {
+        return Err(RunError::WrongSize {
+            expected: size,
+            found,
+        });
+    }
+    Ok(StudentImage {
+        width: found.0,
+        height: found.1,
+        rgb: decoded.into_raw(),
+    })
+}

@@ -1,0 +1,387 @@
+//! Writes a whole scene (its meshes, spheres, materials, area and point
+//! lights and camera) as a COLLADA file in the course's dialect, so that a
+//! course binary renders the project's own scenes: the checker
+//! ([`crate::check`]) hands a student's binary these where the course's
+//! files are missing.
+//!
+//! The file is Z-up like every course file: world points are written as
+//! `G p` with `G (x, y, z) = (-x, z, y)`, which is its own inverse, so the
+//! course's loader maps them back. Every transform is a node `<matrix>`
+//! whose columns are written in file space:
+//!
+//! - area light: the loader reads the centre `T (0,0,0,1)`, the emitting
+//!   direction `T (0,0,-1,1) - c` and the edges `T (-1,0,0,1) - c` and
+//!   `T (0,1,0,1) - c`, so the columns are `-dim_x`, `dim_y`, `-direction`
+//!   and the centre;
+//! - camera: only `normalize(T (0,0,-1,1))` counts (translation included),
+//!   so `T` translates by `G dir_to_camera + (0, 0, 1)`;
+//! - point light and sphere: a translation to the position or centre.
+//!
+//! Materials are CGL techniques (diffuse as `<lambert>`); the mesh is one
+//! geometry with a `<triangles>` element per material. Normals are not
+//! written: the course rebuilds them from the connectivity.
+
+use std::fmt::Write as _;
+use std::io::{self, Write};
+
+use glam::Vec3;
+
+use super::{Light, Material, Scene};
+
+/// The course's `G`, from world space to the file's Z-up space (and back).
+fn to_file(p: Vec3) -> Vec3 {
+    Vec3::new(-p.x, p.z, p.y)
+}
+
+/// A `<matrix>` with columns `x`, `y`, `z` and translation `t`, row major.
+fn matrix(x: Vec3, y: Vec3, z: Vec3, t: Vec3) -> String {
+    let rows = (0..3).map(|r| format!("{} {} {} {}", x[r], y[r], z[r], t[r]));
+    format!(
+        "<matrix>{} 0 0 0 1</matrix>",
+        rows.collect::<Vec<_>>().join(" ")
+    )
+}
+
+fn translation(t: Vec3) -> String {
+    matrix(Vec3::X, Vec3::Y, Vec3::Z, t)
+}
+
+fn triple(c: Vec3) -> String {
+    format!("{} {} {}", c.x, c.y, c.z)
+}
+
+/// The effect of `material`, or why the course format cannot say it.
+fn effect(material: &Material) -> Result<String, String> {
+    let cgl =
+        |body: String| format!(r#"<extra><technique profile="CGL">{body}</technique></extra>"#);
+    Ok(match *material {
+        Material::Diffuse { albedo } => format!(
+            r#"<profile_COMMON><technique sid="common"><lambert><diffuse><color>{} 1</color></diffuse></lambert></technique></profile_COMMON>"#,
+            triple(albedo)
+        ),
+        Material::Emission { radiance } => cgl(format!(
+            "<emission><radiance>{}</radiance></emission>",
+            triple(radiance)
+        )),
+        Material::Mirror { reflectance } => cgl(format!(
+            "<mirror><reflectance>{}</reflectance></mirror>",
+            triple(reflectance)
+        )),
+        Material::Glass {
+            reflectance,
+            transmittance,
+            roughness,
+            ior,
+        } => cgl(format!(
+            "<glass><reflectance>{}</reflectance><transmittance>{}</transmittance><roughness>{roughness}</roughness><ior>{ior}</ior></glass>",
+            triple(reflectance),
+            triple(transmittance)
+        )),
+        Material::Refraction {
+            transmittance,
+            roughness,
+            ior,
+        } => cgl(format!(
+            "<refraction><transmittance>{}</transmittance><roughness>{roughness}</roughness><ior>{ior}</ior></refraction>",
+            triple(transmittance)
+        )),
+        Material::Microfacet { alpha, eta, k } => cgl(format!(
+            "<microfacet><alpha>{alpha}</alpha><eta>{}</eta><k>{}</k></microfacet>",
+            triple(eta),
+            triple(k)
+        )),
+        Material::EmissiveDiffuse { .. } => {
+            return Err("an emissive diffuse material has no course equivalent".into())
+        }
+    })
+}
+
+/// The light's `<light>` body and its node's matrix.
+fn light(light: &Light) -> Result<(String, String), String> {
+    match *light {
+        Light::Area {
+            radiance,
+            center,
+            direction,
+            dim_x,
+            dim_y,
+        } => Ok((
+            format!(
+                r#"<technique_common><point><color>{c}</color></point></technique_common><extra><technique profile="CGL"><area><color>{c}</color></area></technique></extra>"#,
+                c = triple(radiance)
+            ),
+            matrix(
+                -to_file(dim_x),
+                to_file(dim_y),
+                -to_file(direction),
+                to_file(center),
+            ),
+        )),
+        Light::Point {
+            intensity,
+            position,
+        } => Ok((
+            format!(
+                "<technique_common><point><color>{}</color></point></technique_common>",
+                triple(intensity)
+            ),
+            translation(to_file(position)),
+        )),
+        _ => Err(format!("a {} light is not written", light.kind())),
+    }
+}
+
+/// Writes `scene` as a `.dae` document to `out`; an `InvalidInput` error
+/// names what the course format cannot hold (an emissive diffuse material,
+/// a directional, ambient or spot light), before anything is written.
+pub fn write_scene_dae(scene: &Scene, out: &mut impl Write) -> io::Result<()> {
+    let invalid = |e: String| io::Error::new(io::ErrorKind::InvalidInput, e);
+    let effects: Vec<String> = scene
+        .materials
+        .iter()
+        .map(effect)
+        .collect::<Result<_, _>>()
+        .map_err(invalid)?;
+    let lights: Vec<(String, String)> = scene
+        .lights
+        .iter()
+        .map(light)
+        .collect::<Result<_, _>>()
+        .map_err(invalid)?;
+    let mut doc = String::from(
+        r#"<?xml version="1.0" encoding="utf-8"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+<asset><up_axis>Z_UP</up_axis></asset>
+"#,
+    );
+    let cam = &scene.camera;
+    let _ = writeln!(
+        doc,
+        r#"<library_cameras><camera id="cam"><optics><technique_common><perspective><xfov>{}</xfov><yfov>{}</yfov><znear>{}</znear><zfar>{}</zfar></perspective></technique_common></optics></camera></library_cameras>"#,
+        cam.hfov_deg, cam.vfov_deg, cam.znear, cam.zfar
+    );
+    doc += "<library_lights>";
+    for (i, (body, _)) in lights.iter().enumerate() {
+        let _ = write!(doc, r#"<light id="light{i}">{body}</light>"#);
+    }
+    doc += "</library_lights>\n<library_effects>";
+    for (i, body) in effects.iter().enumerate() {
+        let _ = write!(doc, r#"<effect id="fx{i}">{body}</effect>"#);
+    }
+    doc += "</library_effects>\n<library_materials>";
+    for i in 0..effects.len() {
+        let _ = write!(
+            doc,
+            r##"<material id="mat{i}"><instance_effect url="#fx{i}"/></material>"##
+        );
+    }
+    doc += "</library_materials>\n<library_geometries>";
+    write_mesh(scene, &mut doc);
+    for (i, sphere) in scene.spheres.iter().enumerate() {
+        let _ = write!(
+            doc,
+            r#"<geometry id="sphere{i}"><extra><technique profile="CGL"><sphere><radius>{}</radius></sphere></technique></extra></geometry>"#,
+            sphere.radius
+        );
+    }
+    doc += "</library_geometries>\n<library_visual_scenes><visual_scene id=\"main\">\n";
+    let camera_t = to_file(cam.dir_to_camera) + Vec3::Z;
+    let _ = writeln!(
+        doc,
+        r##"<node id="camera">{}<instance_camera url="#cam"/></node>"##,
+        translation(camera_t)
+    );
+    for (i, (_, m)) in lights.iter().enumerate() {
+        let _ = writeln!(
+            doc,
+            r##"<node id="light{i}-node">{m}<instance_light url="#light{i}"/></node>"##
+        );
+    }
+    let instance = |symbol: String, material: u32| {
+        format!(r##"<instance_material symbol="{symbol}" target="#mat{material}"/>"##)
+    };
+    let bind = |instances: String| {
+        format!("<bind_material><technique_common>{instances}</technique_common></bind_material>")
+    };
+    if !scene.mesh.triangles.is_empty() {
+        let instances: String = used_materials(scene)
+            .into_iter()
+            .map(|m| instance(format!("m{m}"), m))
+            .collect();
+        let _ = writeln!(
+            doc,
+            r##"<node id="mesh"><instance_geometry url="#mesh">{}</instance_geometry></node>"##,
+            bind(instances)
+        );
+    }
+    for (i, sphere) in scene.spheres.iter().enumerate() {
+        let _ = writeln!(
+            doc,
+            r##"<node id="sphere{i}-node">{}<instance_geometry url="#sphere{i}">{}</instance_geometry></node>"##,
+            translation(to_file(sphere.center)),
+            bind(instance(format!("s{i}"), sphere.material))
+        );
+    }
+    doc += "</visual_scene></library_visual_scenes>\n<scene><instance_visual_scene url=\"#main\"/></scene>\n</COLLADA>\n";
+    out.write_all(doc.as_bytes())
+}
+
+/// The materials the mesh's triangles use, in order.
+fn used_materials(scene: &Scene) -> Vec<u32> {
+    let mut used: Vec<u32> = scene.mesh.materials.clone();
+    used.sort_unstable();
+    used.dedup();
+    used
+}
+
+/// The mesh: its positions in file space and a `<triangles>` element per
+/// material.
+fn write_mesh(scene: &Scene, doc: &mut String) {
+    let mesh = &scene.mesh;
+    if mesh.triangles.is_empty() {
+        return;
+    }
+    let n = mesh.positions.len();
+    let _ = write!(
+        doc,
+        r#"<geometry id="mesh"><mesh><source id="pos"><float_array id="pos-array" count="{}">"#,
+        3 * n
+    );
+    for &p in &mesh.positions {
+        let _ = write!(doc, "{} ", triple(to_file(p)));
+    }
+    let _ = write!(
+        doc,
+        r##"</float_array><technique_common><accessor source="#pos-array" count="{n}" stride="3"/></technique_common></source><vertices id="vtx"><input semantic="POSITION" source="#pos"/></vertices>"##
+    );
+    for m in used_materials(scene) {
+        let triangles: Vec<&[u32; 3]> = mesh
+            .triangles
+            .iter()
+            .zip(&mesh.materials)
+            .filter(|(_, &tm)| tm == m)
+            .map(|(t, _)| t)
+            .collect();
+        let _ = write!(
+            doc,
+            r##"<triangles material="m{m}" count="{}"><input semantic="VERTEX" source="#vtx" offset="0"/><p>"##,
+            triangles.len()
+        );
+        for [a, b, c] in triangles {
+            let _ = write!(doc, "{a} {b} {c} ");
+        }
+        doc.push_str("</p></triangles>");
+    }
+    doc.push_str("</mesh></geometry>");
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::builtin;
+    use crate::scene::collada::load_str;
+
+    fn round_trip(scene: &Scene) -> Scene {
+        let mut text = Vec::new();
+        write_scene_dae(scene, &mut text).unwrap();
+        load_str(std::str::from_utf8(&text).unwrap(), "exported.dae").unwrap()
+    }
+
+    fn close(a: Vec3, b: Vec3) -> bool {
+        (a - b).length() <= 1e-5 * (1.0 + b.length())
+    }
+
+    /// The built-in boxes, written and read back by the course's rules
+    /// (the loader applies `G` and the node matrices): the same triangles
+    /// with the same materials, spheres, lights and camera.
+    #[test]
+    fn the_built_in_boxes_load_back_as_they_were() {
+        for scene in [
+            builtin::cornell_box(),
+            builtin::materials_box(),
+            builtin::mesh_balls_box(),
+        ] {
+            let loaded = round_trip(&scene);
+            assert!(loaded.warnings.is_empty(), "{:?}", loaded.warnings);
+            let corners = |s: &Scene| -> Vec<([Vec3; 3], Material)> {
+                let mut v: Vec<_> = s
+                    .mesh
+                    .triangles
+                    .iter()
+                    .zip(&s.mesh.materials)
+                    .map(|(t, &m)| {
+                        (
+                            t.map(|i| s.mesh.positions[i as usize]),
+                            s.materials[m as usize],
+                        )
+                    })
+                    .collect();
+                v.sort_by(|a, b| format!("{a:?}").cmp(&format!("{b:?}")));
+                v
+            };
+            let (a, b) = (corners(&loaded), corners(&scene));
+            assert_eq!(a.len(), b.len());
+            for ((pa, ma), (pb, mb)) in a.iter().zip(&b) {
+                assert!(
+                    pa.iter().zip(pb).all(|(x, y)| close(*x, *y)),
+                    "{pa:?} {pb:?}"
+                );
+                assert_eq!(ma, mb);
+            }
+            assert_eq!(loaded.spheres.len(), scene.spheres.len());
+            for (s, t) in loaded.spheres.iter().zip(&scene.spheres) {
+                assert!(close(s.center, t.center) && (s.radius - t.radius).abs() < 1e-6);
+                assert_eq!(
+                    loaded.materials[s.material as usize],
+                    scene.materials[t.material as usize]
+                );
+            }
+            assert_eq!(loaded.lights.len(), scene.lights.len());
+            for (l, m) in loaded.lights.iter().zip(&scene.lights) {
+                match (l, m) {
+                    (
+                        Light::Area {
+                            radiance: r1,
+                            center: c1,
+                            direction: d1,
+                            dim_x: x1,
+                            dim_y: y1,
+                        },
+                        Light::Area {
+                            radiance: r2,
+                            center: c2,
+                            direction: d2,
+                            dim_x: x2,
+                            dim_y: y2,
+                        },
+                    ) => {
+                        assert_eq!(r1, r2);
+                        assert!(close(*c1, *c2) && close(*d1, *d2));
+                        assert!(close(*x1, *x2) && close(*y1, *y2), "{x1} {x2} {y1} {y2}");
+                    }
+                    _ => panic!("{l:?} against {m:?}"),
+                }
+            }
+            let (c, d) = (loaded.camera, scene.camera);
+            assert!(close(c.dir_to_camera, d.dir_to_camera), "{c:?} {d:?}");
+            assert!(
+                (c.hfov_deg - d.hfov_deg).abs() < 1e-4 && (c.vfov_deg - d.vfov_deg).abs() < 1e-4
+            );
+        }
+    }
+
+    /// What the course format cannot hold is refused before a byte is
+    /// written.
+    #[test]
+    fn what_the_format_cannot_hold_is_refused() {
+        let mut scene = builtin::cornell_box();
+        scene.lights.push(Light::Ambient {
+            radiance: Vec3::ONE,
+        });
+        let mut text = Vec::new();
+        let error = write_scene_dae(&scene, &mut text).unwrap_err();
+        assert_eq!(error.kind(), io::ErrorKind::InvalidInput);
+        assert!(error.to_string().contains("ambient"), "{error}");
+        assert!(text.is_empty());
+    }
+}
