@@ -28,7 +28,7 @@ use pathtracer::adaptive::Adaptive;
 use pathtracer::course::{
     Assignment, CourseExact, CourseSampling, CourseView, Lamps, StarterDirect, StarterTracer,
 };
-use pathtracer::math::{luminance, Rgb};
+use pathtracer::math::{luminance, ratio_colour, Rgb};
 use pathtracer::mistakes::{Mistake, Mistakes};
 use pathtracer::render::{RenderSettings, Rendered};
 use pathtracer::sampling::SamplerKind;
@@ -87,20 +87,11 @@ fn ratio_map(wrong: &Rendered, right: &Rendered) -> Vec<Rgb> {
         }
         sum
     };
-    let colour = |t: f32| {
-        // t in [-1, 1]: blue to white to red.
-        let t = t.clamp(-1.0, 1.0);
-        if t < 0.0 {
-            Rgb::new(1.0 + t, 1.0 + t, 1.0)
-        } else {
-            Rgb::new(1.0, 1.0 - t, 1.0 - t)
-        }
-    };
     let mut out = Vec::with_capacity((w * h) as usize);
     for y in 0..h {
         for x in 0..w {
             if y >= h - 12 {
-                out.push(colour(2.0 * x as f32 / (w - 1) as f32 - 1.0));
+                out.push(ratio_colour(2.0 * x as f32 / (w - 1) as f32 - 1.0));
                 continue;
             }
             let (a, b) = (
@@ -110,7 +101,7 @@ fn ratio_map(wrong: &Rendered, right: &Rendered) -> Vec<Rgb> {
             out.push(if a <= 1e-6 && b <= 1e-6 {
                 Rgb::splat(0.6)
             } else {
-                colour(((a + 1e-6) / (b + 1e-6)).log2() / 2.0)
+                ratio_colour(((a + 1e-6) / (b + 1e-6)).log2() / 2.0)
             });
         }
     }

@@ -2,7 +2,8 @@
 //! reference renders of the same flags by the course's renderer
 //! ([`CourseExact::render`]), with or without a catalogued mistake.
 //!
-//! Every check renders at [`SIZE`] with fewer than 32 samples per pixel,
+//! Every check renders at [`SIZE`] with a few samples per pixel (the
+//! decision reads 16 x 16 pixel blocks), fewer than 32,
 //! so that adaptive sampling, on by default in a binary whose part 5 is
 //! written, never stops a pixel (its test runs every 32 samples).
 
@@ -17,9 +18,9 @@ use crate::render::{tone_map, RenderSettings};
 use crate::sampling::SamplerKind;
 use crate::scene::Scene;
 
-/// The image size of every check (the course frames smaller sizes as it
-/// frames 480 x 360, zoomed in; the reference frames them alike).
-pub const SIZE: (u32, u32) = (128, 96);
+/// The image size of every check: the course frames a scene whole at
+/// 480 x 360 only (smaller sizes zoom in on its middle).
+pub const SIZE: (u32, u32) = (480, 360);
 
 /// One check: a setting of the course's flags that isolates a part.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -60,7 +61,7 @@ pub fn battery(parts: &[u8]) -> Vec<Check> {
             function: "PathTracer::estimate_direct_lighting_importance",
             hemisphere: false,
             light_samples: 4,
-            spp: 8,
+            spp: 2,
             ..direct
         },
         Check {
@@ -69,6 +70,7 @@ pub fn battery(parts: &[u8]) -> Vec<Check> {
             function: "PathTracer::at_least_one_bounce_radiance",
             hemisphere: false,
             max_depth: 4,
+            spp: 4,
             ..direct
         },
         Check {
@@ -78,6 +80,7 @@ pub fn battery(parts: &[u8]) -> Vec<Check> {
             hemisphere: false,
             max_depth: 2,
             accumulate: false,
+            spp: 4,
             ..direct
         },
     ];

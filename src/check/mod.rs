@@ -9,7 +9,8 @@
 //!   course's renders of them;
 //! - [`stats`]: the decision, against the distribution of a correct
 //!   solution's images (false alarms at most [`ALPHA`] per battery);
-//! - [`verdict`]: what differs and where, and which mistakes fit.
+//! - [`verdict`]: what differs and where, and which mistakes fit;
+//! - [`report`]: `report.html`, one self-contained page.
 //!
 //! The scene is the course's `CBspheres_lambertian.dae` where one is found
 //! (`--scenes DIR`, else `CS184_SCENES`), else the project's own Cornell
@@ -17,6 +18,7 @@
 //! ([`crate::scene::export_scene`]) into the output folder.
 
 pub mod battery;
+pub mod report;
 pub mod stats;
 pub mod student;
 pub mod verdict;
@@ -27,7 +29,7 @@ use crate::scene::{self, builtin, Scene};
 
 pub use battery::{battery, Check, Stage};
 pub use student::{Capabilities, RunError, Student};
-pub use verdict::{judge, CheckResult, Outcome, Suspect};
+pub use verdict::{judge, CheckImages, CheckResult, Outcome, Suspect};
 
 /// The chance that a correct renderer fails one or more checks of a full
 /// battery: each of its `n` checks is decided at `ALPHA / n`.

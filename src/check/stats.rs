@@ -4,10 +4,11 @@
 //! reference is not one image but the *distribution* of the images a
 //! correct solution renders at the same flags: [`NullModel`] renders `K`
 //! of them ([`super::battery::Stage::render`], independent seeds) through
-//! the same tone map and truncation, and keeps, per 8 x 8 pixel block and
+//! the same tone map and truncation, and keeps, per [`BLOCK`]-pixel square and
 //! colour channel (a *cell*), the mean display value `mu` and the variance
 //! `s^2` of one image's block mean (the pixels' variances over the `K`
-//! renders, summed over the block, over `n^2`: pixels are independent).
+//! renders, summed over the block, over `n^2`: pixels are independent;
+//! each pixel's at least its 8-bit rounding's, `(1/255)^2 / 12`).
 //!
 //! A student's cell value `x` then gives
 //!
@@ -17,7 +18,7 @@
 //!
 //! (`tau` = [`TOLERANCE`] forgives a systematic difference too small to
 //! matter, such as rounding against truncation), and the image passes when
-//! `sum z^2` over the `C` cells stays below the chi-square quantile of `C`
+//! `sum min(z^2, 25)` over the `C` cells ([`statistic`]) stays below the chi-square quantile of `C`
 //! degrees of freedom at `1 - alpha` (Wilson and Hilferty's approximation,
 //! 1931): under a correct renderer each `z^2` is at most a chi-square of
 //! one degree, so it fails with probability at most `alpha`.
@@ -27,7 +28,7 @@ use libm::erfc;
 use super::student::StudentImage;
 
 /// Block side in pixels.
-pub const BLOCK: u32 = 8;
+pub const BLOCK: u32 = 16;
 
 /// The relative difference of a cell's display value forgiven as too
 /// small to matter: 1 % of display (about 2 % of radiance).
@@ -96,8 +97,12 @@ impl NullModel {
                 }
             }
         }
+        // A floor: the 8-bit rounding of every pixel, (1/255)^2 / 12 each,
+        // so that a cell no render varies in (black, or clipped white)
+        // still has a finite scale.
+        let rounding = (1.0f64 / 255.0).powi(2) / 12.0;
         for (v, n) in variance.iter_mut().zip(&counts) {
-            *v /= n * n;
+            *v = (*v + n * rounding) / (n * n);
         }
         NullModel {
             width,
@@ -108,27 +113,43 @@ impl NullModel {
         }
     }
 
-    /// Each cell's `z` (see the module docs) of the cells `x`, measured
-    /// against `mean` (this model's, or a mistake's).
-    pub fn z_scores(&self, x: &[f64], mean: &[f64], mean_renders: usize) -> Vec<f64> {
-        let inflate = 1.0 + 1.0 / mean_renders as f64;
+    /// Each cell's `z` (see the module docs) of the cells `x` against
+    /// this model: its mean, and its noise (a render's, and the mean's
+    /// own over [`NullModel::renders`]).
+    pub fn z_scores(&self, x: &[f64]) -> Vec<f64> {
+        let inflate = 1.0 + 1.0 / self.renders as f64;
         x.iter()
-            .zip(mean)
+            .zip(&self.mean)
             .zip(&self.variance)
             .map(|((&x, &mu), &s2)| {
                 let excess = ((x - mu).abs() - TOLERANCE * mu).max(0.0);
-                if excess == 0.0 {
-                    0.0
-                } else if s2 > 0.0 {
-                    excess / (s2 * inflate).sqrt()
-                } else {
-                    // No noise at all (a clipped or black cell), and a real difference.
-                    f64::INFINITY
-                }
+                excess / (s2 * inflate).sqrt()
             })
             .collect()
     }
+
+    /// This model with each cell's variance at least `other`'s: a model
+    /// of two renders sees no noise in a cell whose pixels vary rarely
+    /// (a lamp's edge, clipped in most samples); the null model's eight
+    /// renders see more of it.
+    pub fn widened(mut self, other: &NullModel) -> Self {
+        for (v, w) in self.variance.iter_mut().zip(&other.variance) {
+            *v = v.max(*w);
+        }
+        self
+    }
 }
+
+/// The statistic: `sum z^2` over the cells, each cell's share capped at
+/// [`CELL_CAP`] so that one cell cannot decide alone (capping only lowers
+/// the sum, so the chi-square bound on false alarms still holds).
+pub fn statistic(z: &[f64]) -> f64 {
+    z.iter().map(|z| (z * z).min(CELL_CAP)).sum()
+}
+
+/// The most one cell adds to [`statistic`]: a difference of 5 standard
+/// errors.
+pub const CELL_CAP: f64 = 25.0;
 
 /// The chi-square quantile of `dof` degrees of freedom at `1 - alpha`
 /// (Wilson and Hilferty's cube-root normal approximation).
@@ -174,12 +195,13 @@ mod tests {
 
     #[test]
     fn cells_average_blocks_per_channel() {
-        // 16 x 8: two blocks; the left red at 255, the right blue at 51.
-        let mut rgb = vec![0u8; 16 * 8 * 3];
-        for y in 0..8 {
-            for x in 0..16 {
-                let i = 3 * (y * 16 + x);
-                if x < 8 {
+        // Two blocks side by side: the left red at 255, the right blue at 51.
+        let (w, h) = (2 * BLOCK, BLOCK);
+        let mut rgb = vec![0u8; (w * h * 3) as usize];
+        for y in 0..h {
+            for x in 0..w {
+                let i = (3 * (y * w + x)) as usize;
+                if x < BLOCK {
                     rgb[i] = 255;
                 } else {
                     rgb[i + 2] = 51;
@@ -187,7 +209,7 @@ mod tests {
             }
         }
         let expected = [1.0, 0.0, 0.0, 0.0, 0.0, 0.2];
-        let found = cells(16, 8, &rgb);
+        let found = cells(w, h, &rgb);
         assert_eq!(found.len(), expected.len());
         assert!(
             found
@@ -201,12 +223,13 @@ mod tests {
     #[test]
     fn the_null_models_variance_is_that_of_a_block_mean() {
         // Two renders of an 8 x 8 image, every value 0 in one and 2/255 in
-        // the other: per value variance (1/255)^2 * 2, a block mean's the
-        // same over 64 (the sum of 64 variances over 64^2).
+        // the other: per value variance (1/255)^2 * 2 plus the rounding
+        // floor, a block mean's the same over 64 (the sum of 64 variances
+        // over 64^2).
         let a = vec![0u8; 8 * 8 * 3];
         let b = vec![2u8; 8 * 8 * 3];
         let model = NullModel::new(8, 8, &[a, b]);
-        let per_value = 2.0 * (1.0f64 / 255.0).powi(2);
+        let per_value = 2.0 * (1.0f64 / 255.0).powi(2) + (1.0f64 / 255.0).powi(2) / 12.0;
         for v in &model.variance {
             assert!((v - per_value / 64.0).abs() < 1e-15);
         }

@@ -3,7 +3,7 @@
 //! whose images fit it, best first.
 
 use super::battery::{Check, Stage, SIZE};
-use super::stats::{chi_square_quantile, student_cells, NullModel, BLOCK};
+use super::stats::{self, chi_square_quantile, student_cells, NullModel, BLOCK};
 use super::student::{Capabilities, Student};
 use crate::mistakes::{Mistake, Mistakes};
 
@@ -17,7 +17,8 @@ pub const SUSPECT_RENDERS: usize = 2;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Suspect {
     pub mistake: Mistake,
-    /// `sum z^2` per cell against the mistake's images: about 1 or less
+    /// [`stats::statistic`] per cell against the mistake's images (their mean,
+    /// their noise or the correct images', the larger): about 1 or less
     /// when it fits.
     pub misfit: f64,
     /// Whether it passes where the correct image failed.
@@ -47,7 +48,25 @@ pub enum Outcome {
 pub struct CheckResult {
     pub check: Check,
     pub outcome: Outcome,
+    /// What the report shows, when the binary gave an image.
+    pub images: Option<CheckImages>,
 }
+
+/// The 8-bit images of a check (three bytes a pixel, [`SIZE`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct CheckImages {
+    pub student: Vec<u8>,
+    /// The mean of the null model's renders.
+    pub reference: Vec<u8>,
+    /// Per block, the student's luminance over the reference's, in
+    /// radiance (display ratio to the power 2.2).
+    pub ratio: Vec<f64>,
+    /// The best suspects' images (a render of each), best first.
+    pub suspects: Vec<(Mistake, Vec<u8>)>,
+}
+
+/// How many suspects the report shows.
+pub const SHOWN_SUSPECTS: usize = 3;
 
 /// Runs `check` with `student` on the scene file `scene_file` (which
 /// `stage` holds loaded) and decides it at false-alarm rate `alpha`.
@@ -63,6 +82,7 @@ pub fn judge(
     let result = |outcome| CheckResult {
         check: *check,
         outcome,
+        images: None,
     };
     if !check.accumulate && !capabilities.accumulate_flag {
         return result(Outcome::Skipped("the binary has no -o".into()));
@@ -78,39 +98,76 @@ pub fn judge(
         .map(|seed| stage.render(check, Mistakes::NONE, 1000 + seed, threads))
         .collect();
     let model = NullModel::new(SIZE.0, SIZE.1, &renders);
+    let mut images = CheckImages {
+        reference: mean_image(&renders),
+        ratio: block_ratios(&x, &model.mean),
+        student: image.rgb,
+        suspects: Vec::new(),
+    };
     let threshold = chi_square_quantile(x.len() as f64, alpha);
-    let sum_sq = |z: &[f64]| z.iter().map(|z| z * z).sum::<f64>();
-    let z = model.z_scores(&x, &model.mean, model.renders);
-    let statistic = sum_sq(&z);
+    let z = model.z_scores(&x);
+    let statistic = stats::statistic(&z);
     if statistic <= threshold {
-        return result(Outcome::Pass {
-            statistic,
-            threshold,
-        });
+        return CheckResult {
+            images: Some(images),
+            ..result(Outcome::Pass {
+                statistic,
+                threshold,
+            })
+        };
     }
-    let mut suspects: Vec<Suspect> = check
+    let mut suspects: Vec<(Suspect, Vec<u8>)> = check
         .suspects()
         .into_iter()
         .map(|mistake| {
             let renders: Vec<Vec<u8>> = (0..SUSPECT_RENDERS as u64)
                 .map(|seed| stage.render(check, Mistakes::of(&[mistake]), 2000 + seed, threads))
                 .collect();
-            let wrong = NullModel::new(SIZE.0, SIZE.1, &renders);
-            let s = sum_sq(&model.z_scores(&x, &wrong.mean, SUSPECT_RENDERS));
-            Suspect {
+            let wrong = NullModel::new(SIZE.0, SIZE.1, &renders).widened(&model);
+            let s = stats::statistic(&wrong.z_scores(&x));
+            let suspect = Suspect {
                 mistake,
                 misfit: s / x.len() as f64,
                 fits: s <= threshold,
-            }
+            };
+            (suspect, renders.into_iter().next().unwrap_or_default())
         })
         .collect();
-    suspects.sort_by(|a, b| a.misfit.total_cmp(&b.misfit));
-    result(Outcome::Fail {
-        statistic,
-        threshold,
-        what: describe(&x, &model.mean, &z),
-        suspects,
-    })
+    suspects.sort_by(|a, b| a.0.misfit.total_cmp(&b.0.misfit));
+    images.suspects = suspects
+        .iter()
+        .take(SHOWN_SUSPECTS)
+        .map(|(s, image)| (s.mistake, image.clone()))
+        .collect();
+    CheckResult {
+        images: Some(images),
+        ..result(Outcome::Fail {
+            statistic,
+            threshold,
+            what: describe(&x, &model.mean, &z),
+            suspects: suspects.into_iter().map(|(s, _)| s).collect(),
+        })
+    }
+}
+
+/// The per-value mean of 8-bit images.
+fn mean_image(images: &[Vec<u8>]) -> Vec<u8> {
+    let n = images.len().max(1) as f64;
+    (0..images.first().map_or(0, Vec::len))
+        .map(|i| (images.iter().map(|im| im[i] as f64).sum::<f64>() / n).round() as u8)
+        .collect()
+}
+
+/// Per block, the luminance ratio of cells `x` over `mean`, in radiance.
+fn block_ratios(x: &[f64], mean: &[f64]) -> Vec<f64> {
+    let lum = |c: &[f64]| 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+    x.chunks(3)
+        .zip(mean.chunks(3))
+        .map(|(a, b)| match (lum(a), lum(b)) {
+            (a, b) if a <= 0.0 && b <= 0.0 => 1.0,
+            (a, b) => (a / b).powf(2.2),
+        })
+        .collect()
 }
 
 /// What differs, in words: the brightness ratio (linear, from the display
@@ -147,7 +204,7 @@ fn describe(x: &[f64], mean: &[f64], z: &[f64]) -> String {
         )
     };
     format!(
-        "{:.2} times as bright as the course's image (radiance); {:.0} % of the 8 x 8 blocks differ, {place}",
+        "{:.2} times as bright as the course's image (radiance); {:.0} % of the 16 x 16 blocks differ, {place}",
         ratio,
         100.0 * share
     )

@@ -8,7 +8,7 @@ use std::time::Duration;
 use clap::Parser;
 use indicatif::{ProgressBar, ProgressStyle};
 
-use crate::check::{battery, judge, scene_for_checks, table, Stage, Student, ALPHA};
+use crate::check::{battery, judge, report, scene_for_checks, table, Stage, Student, ALPHA};
 
 /// Check your own course renderer: runs it through the course's command
 /// line and compares each image with what a correct solution renders.
@@ -72,6 +72,13 @@ pub fn check(args: &CheckArgs) -> Result<(), Box<dyn Error>> {
     }
     bar.finish_and_clear();
     print!("{}", table(&results));
+    let page = report::html(
+        &student.binary.to_string_lossy(),
+        &scene_file.to_string_lossy(),
+        &results,
+    );
+    let path = report::write_report(&args.out, &page)
+        .map_err(|e| format!("{}: {e}", args.out.join("report.html").display()))?;
     for r in &results {
         if let crate::check::Outcome::Fail { what, suspects, .. } = &r.outcome {
             println!("\npart {}, {}: {what}", r.check.part, r.check.name);
@@ -81,5 +88,6 @@ pub fn check(args: &CheckArgs) -> Result<(), Box<dyn Error>> {
             }
         }
     }
+    println!("\nwrote {}", path.display());
     Ok(())
 }

@@ -8,3 +8,15 @@ pub type Rgb = glam::Vec3;
 pub fn luminance(c: Rgb) -> f32 {
     0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z
 }
+
+/// The ratio maps' diverging colour for `log2(ratio) / 2` in `[-1, 1]`:
+/// blue (a quarter) through white (equal) to red (four times); values
+/// beyond the ends take the ends' colours.
+pub fn ratio_colour(t: f32) -> Rgb {
+    let t = t.clamp(-1.0, 1.0);
+    if t < 0.0 {
+        Rgb::new(1.0 + t, 1.0 + t, 1.0)
+    } else {
+        Rgb::new(1.0, 1.0 - t, 1.0 - t)
+    }
+}

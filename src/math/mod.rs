@@ -14,5 +14,5 @@ pub mod rng;
 pub mod special;
 pub mod warp;
 
-pub use color::{luminance, Rgb};
+pub use color::{luminance, ratio_colour, Rgb};
 pub use frame::Frame;

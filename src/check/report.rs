@@ -1,0 +1,252 @@
+//! `report.html`: one self-contained page (every image inlined as a PNG
+//! data URI; no server, no network), readable offline. For each check: the
+//! verdict, what differs, the student's image beside the reference and
+//! the ratio of the two as a heat map with its colour bar, and the named
+//! mistakes with their images at the same flags. The markup is well-formed
+//! XML too, so a test can read it without a browser.
+
+use std::fmt::Write as _;
+use std::io::{self, Cursor};
+use std::path::{Path, PathBuf};
+
+use super::battery::SIZE;
+use super::stats::BLOCK;
+use super::verdict::{CheckImages, CheckResult, Outcome};
+use crate::math::ratio_colour;
+
+/// Standard base64 (RFC 4648) of `bytes`.
+pub fn base64(bytes: &[u8]) -> String {
+    const ALPHABET: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    let mut text = String::with_capacity(bytes.len().div_ceil(3) * 4);
+    for chunk in bytes.chunks(3) {
+        let b = [
+            chunk[0],
+            *chunk.get(1).unwrap_or(&0),
+            *chunk.get(2).unwrap_or(&0),
+        ];
+        let n = (b[0] as u32) << 16 | (b[1] as u32) << 8 | b[2] as u32;
+        for k in 0..4 {
+            if k <= chunk.len() {
+                text.push(ALPHABET[(n >> (18 - 6 * k) & 63) as usize] as char);
+            } else {
+                text.push('=');
+            }
+        }
+    }
+    text
+}
+
+/// An 8-bit RGB image as a PNG data URI.
+fn data_uri(width: u32, height: u32, rgb: &[u8]) -> String {
+    let mut png = Vec::new();
+    let encoded = image::RgbImage::from_raw(width, height, rgb.to_vec())
+        .map(|im| im.write_to(&mut Cursor::new(&mut png), image::ImageFormat::Png));
+    match encoded {
+        Some(Ok(())) => format!("data:image/png;base64,{}", base64(&png)),
+        _ => String::new(),
+    }
+}
+
+/// The ratio map: each block coloured by `log2(ratio)` from 1/4 (blue)
+/// to 4 (red), and a colour bar of 12 rows under it.
+fn ratio_map(ratio: &[f64]) -> (u32, u32, Vec<u8>) {
+    let (w, h) = (SIZE.0, SIZE.1 + 12);
+    let bw = SIZE.0.div_ceil(BLOCK);
+    let mut rgb = Vec::with_capacity((w * h * 3) as usize);
+    for y in 0..h {
+        for x in 0..w {
+            let t = if y >= SIZE.1 {
+                2.0 * x as f32 / (w - 1) as f32 - 1.0
+            } else {
+                let r = ratio[((y / BLOCK) * bw + x / BLOCK) as usize];
+                (r.max(1e-6).log2() / 2.0) as f32
+            };
+            rgb.extend(
+                ratio_colour(t)
+                    .to_array()
+                    .map(|c| (255.0 * c).round() as u8),
+            );
+        }
+    }
+    (w, h, rgb)
+}
+
+fn escape(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
+fn figure(caption: &str, width: u32, height: u32, rgb: &[u8]) -> String {
+    format!(
+        r#"<figure><img alt="{c}" width="{}" src="{}"/><figcaption>{c}</figcaption></figure>"#,
+        2 * width,
+        data_uri(width, height, rgb),
+        c = escape(caption)
+    )
+}
+
+fn verdict_word(outcome: &Outcome) -> &'static str {
+    match outcome {
+        Outcome::Pass { .. } => "pass",
+        Outcome::Fail { .. } => "FAIL",
+        Outcome::Skipped(_) => "skipped",
+        Outcome::Error(_) => "error",
+    }
+}
+
+fn section(i: usize, r: &CheckResult) -> String {
+    let c = &r.check;
+    let mut html = format!(
+        r#"<section id="check-{i}"><h2>Part {}: {} <span class="{v}">{v}</span></h2><p>Starter function: <code>{}</code>. Flags: <code>{}</code>.</p>"#,
+        c.part,
+        escape(c.name),
+        c.function,
+        escape(&c.flags(2).join(" ")),
+        v = verdict_word(&r.outcome)
+    );
+    match &r.outcome {
+        Outcome::Pass {
+            statistic,
+            threshold,
+        } => {
+            let _ = write!(html, "<p>Within the noise of a correct solution: statistic {statistic:.1}, threshold {threshold:.1}.</p>");
+        }
+        Outcome::Fail {
+            statistic,
+            threshold,
+            what,
+            ..
+        } => {
+            let _ = write!(
+                html,
+                "<p>{}. Statistic {statistic:.1}, threshold {threshold:.1}.</p>",
+                escape(what)
+            );
+        }
+        Outcome::Skipped(why) | Outcome::Error(why) => {
+            let _ = write!(html, "<p>{}</p>", escape(why));
+        }
+    }
+    if let Some(images) = &r.images {
+        html += &figures(images);
+    }
+    if let Outcome::Fail { suspects, .. } = &r.outcome {
+        html += "<h3>Likely mistakes</h3><ol>";
+        for s in suspects.iter().take(super::verdict::SHOWN_SUSPECTS) {
+            let info = s.mistake.info();
+            let fit = if s.fits { "fits" } else { "does not fit" };
+            let _ = write!(
+                html,
+                "<li><b>{}</b> ({fit}; misfit {:.2} per cell). Look at <code>{}</code>: {}. Shows: {}.",
+                info.name,
+                s.misfit,
+                escape(info.function),
+                escape(info.what),
+                escape(info.symptom)
+            );
+            let image = r
+                .images
+                .as_ref()
+                .and_then(|im| im.suspects.iter().find(|(m, _)| *m == s.mistake));
+            if let Some((_, rgb)) = image {
+                html += &figure(&format!("--mistake {}", info.name), SIZE.0, SIZE.1, rgb);
+            }
+            html += "</li>";
+        }
+        html += "</ol>";
+    }
+    html + "</section>\n"
+}
+
+fn figures(images: &CheckImages) -> String {
+    let (w, h, ratio) = ratio_map(&images.ratio);
+    format!(
+        r#"<div class="row">{}{}{}</div>"#,
+        figure("your image", SIZE.0, SIZE.1, &images.student),
+        figure(
+            "a correct solution's (mean of 8 renders)",
+            SIZE.0,
+            SIZE.1,
+            &images.reference
+        ),
+        figure(
+            "yours / correct, radiance: blue 1/4, white 1, red 4",
+            w,
+            h,
+            &ratio
+        )
+    )
+}
+
+/// The page for `results` of the binary `student` on `scene`.
+pub fn html(student: &str, scene: &str, results: &[CheckResult]) -> String {
+    let mut page = String::from(
+        r#"<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8"/><title>check: your renderer against the course's image</title>
+<style>body{font-family:sans-serif;max-width:60em;margin:auto}img{image-rendering:pixelated}
+figure{display:inline-block;margin:0.3em}.FAIL,.error{color:#b00}.pass{color:#070}.skipped{color:#777}
+table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:0.2em 0.5em}</style></head><body>
+<h1>Your renderer against the course's image</h1>
+"#,
+    );
+    let _ = write!(
+        page,
+        "<p>Binary <code>{}</code>, scene <code>{}</code>. Each check compares your image with the distribution of a correct course solution's images at the same flags (docs/15-check.md).</p>\n<table><tr><th>part</th><th>check</th><th>verdict</th><th>likely mistake</th></tr>",
+        escape(student),
+        escape(scene)
+    );
+    for (i, r) in results.iter().enumerate() {
+        let likely = match &r.outcome {
+            Outcome::Fail { suspects, .. } => suspects
+                .iter()
+                .find(|s| s.fits)
+                .map_or("none known fits".to_string(), |s| s.mistake.to_string()),
+            _ => String::new(),
+        };
+        let v = verdict_word(&r.outcome);
+        let _ = write!(
+            page,
+            r##"<tr><td>{}</td><td><a href="#check-{i}">{}</a></td><td class="{v}">{v}</td><td>{likely}</td></tr>"##,
+            r.check.part,
+            escape(r.check.name)
+        );
+    }
+    page += "</table>\n";
+    for (i, r) in results.iter().enumerate() {
+        page += &section(i, r);
+    }
+    page + "</body></html>\n"
+}
+
+/// Writes the page to `out/report.html`, whole or not at all (a temporary
+/// file renamed into place).
+pub fn write_report(out: &Path, page: &str) -> io::Result<PathBuf> {
+    let path = out.join("report.html");
+    let partial = out.join(".report.html.partial");
+    std::fs::write(&partial, page)?;
+    std::fs::rename(&partial, &path)?;
+    Ok(path)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn base64_matches_rfc_4648() {
+        // RFC 4648, section 10.
+        let cases = [
+            ("", ""),
+            ("f", "Zg=="),
+            ("fo", "Zm8="),
+            ("foo", "Zm9v"),
+            ("foob", "Zm9vYg=="),
+            ("fooba", "Zm9vYmE="),
+            ("foobar", "Zm9vYmFy"),
+        ];
+        for (plain, encoded) in cases {
+            assert_eq!(base64(plain.as_bytes()), encoded);
+        }
+    }
+}
