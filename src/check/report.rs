@@ -77,10 +77,12 @@ fn escape(text: &str) -> String {
         .replace('>', "&gt;")
 }
 
+/// How wide each picture is shown: three to a row.
+const SHOWN_WIDTH: u32 = 300;
+
 fn figure(caption: &str, width: u32, height: u32, rgb: &[u8]) -> String {
     format!(
-        r#"<figure><img alt="{c}" width="{}" src="{}"/><figcaption>{c}</figcaption></figure>"#,
-        2 * width,
+        r#"<figure><img alt="{c}" width="{SHOWN_WIDTH}" src="{}"/><figcaption>{c}</figcaption></figure>"#,
         data_uri(width, height, rgb),
         c = escape(caption)
     )
@@ -185,7 +187,7 @@ pub fn html(student: &str, scene: &str, results: &[CheckResult]) -> String {
         r#"<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"/><title>check: your renderer against the course's image</title>
 <style>body{font-family:sans-serif;max-width:60em;margin:auto}img{image-rendering:pixelated}
-figure{display:inline-block;margin:0.3em}.FAIL,.error{color:#b00}.pass{color:#070}.skipped{color:#777}
+figure{display:inline-block;margin:0.3em;width:300px;vertical-align:top}.FAIL,.error{color:#b00}.pass{color:#070}.skipped{color:#777}
 table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:0.2em 0.5em}</style></head><body>
 <h1>Your renderer against the course's image</h1>
 "#,
