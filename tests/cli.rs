@@ -314,3 +314,29 @@ fn normal_shading_refuses_the_course_image_flags() {
         }
     }
 }
+
+/// A lens so large that camera rays overflow (`-b 1e20`, or `-d 1e20`)
+/// is refused with a message naming the flags, not a panic, and nothing
+/// is written.
+#[test]
+fn a_lens_that_overflows_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("lens.png");
+    let part8 = env!("CARGO_BIN_EXE_part8-dof");
+    for lens in [["-b", "1e20", "-d", "4.7"], ["-b", "0.05", "-d", "1e20"]] {
+        let mut args = vec!["-r", "16", "12", "-s", "1", "-f", out.to_str().unwrap()];
+        args.extend(lens);
+        for binary in [part8, PATHTRACER] {
+            let (ok, _, stderr) = run(binary, &args);
+            assert!(
+                !ok && !stderr.contains("panicked"),
+                "{binary} {lens:?}: {stderr}"
+            );
+            assert!(
+                stderr.contains("the lens (-b"),
+                "{binary} {lens:?}: {stderr}"
+            );
+            assert!(!out.exists());
+        }
+    }
+}

@@ -209,3 +209,28 @@ fn renders_through_the_wide_bvh_equal_renders_through_the_binary_one() {
     };
     assert_eq!(render(&binary), render(&wide));
 }
+
+/// Traversal is safe for any ray: one whose origin or direction is not
+/// finite meets nothing (in a release build; a debug build's assertion
+/// says that no caller should send one).
+#[test]
+#[cfg_attr(debug_assertions, should_panic(expected = "not finite"))]
+fn a_ray_that_is_not_finite_meets_nothing() {
+    let scene = pathtracer::scene::builtin::cornell_box();
+    let accel = WideBvhAccel::new(pathtracer::intersect::Primitives::from_scene(&scene));
+    let origins = [
+        Vec3::new(0.0, 0.7, 3.0),
+        Vec3::splat(f32::NAN),
+        Vec3::splat(f32::INFINITY),
+    ];
+    let dirs = [
+        Vec3::NAN,
+        Vec3::new(f32::INFINITY, 0.0, -1.0),
+        Vec3::new(0.0, 0.0, -1.0),
+    ];
+    for (origin, dir) in origins.into_iter().zip(dirs) {
+        let ray = Ray::new(origin, dir);
+        assert!(accel.nearest(&ray).is_none(), "{ray:?}");
+        assert!(!accel.occluded(&ray), "{ray:?}");
+    }
+}

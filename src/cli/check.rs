@@ -8,7 +8,9 @@ use std::time::Duration;
 use clap::Parser;
 use indicatif::{ProgressBar, ProgressStyle};
 
-use crate::check::{battery, judge, report, scene_for_checks, table, Stage, Student, ALPHA};
+use crate::check::{
+    battery, judge, report, scene_for_checks, table, CheckResult, Outcome, Stage, Student, ALPHA,
+};
 
 /// Check your own course renderer: runs it through the course's command
 /// line and compares each image with what a correct solution renders.
@@ -50,7 +52,9 @@ pub fn check(args: &CheckArgs) -> Result<(), Box<dyn Error>> {
     let scene_file = std::path::absolute(&scene_file)?;
     let stage = Stage::new(scene);
     let checks = battery(&args.parts);
-    let capabilities = student.capabilities().map_err(|e| e.to_string())?;
+    // A binary that cannot even print its usage fails every check with
+    // the reason, in the table and the report alike.
+    let capabilities = student.capabilities();
     let alpha = ALPHA / checks.len().max(1) as f64;
     let bar = ProgressBar::new(checks.len() as u64).with_style(
         ProgressStyle::with_template("{bar:30} {pos}/{len} {msg}").expect("a valid template"),
@@ -59,15 +63,14 @@ pub fn check(args: &CheckArgs) -> Result<(), Box<dyn Error>> {
     for check in &checks {
         bar.set_message(check.name);
         let file = scene_file.to_string_lossy();
-        results.push(judge(
-            check,
-            &student,
-            capabilities,
-            &file,
-            &stage,
-            alpha,
-            args.threads,
-        ));
+        results.push(match &capabilities {
+            Ok(caps) => judge(check, &student, *caps, &file, &stage, alpha, args.threads),
+            Err(e) => CheckResult {
+                check: *check,
+                outcome: Outcome::Error(e.to_string()),
+                images: None,
+            },
+        });
         bar.inc(1);
     }
     bar.finish_and_clear();
@@ -80,7 +83,7 @@ pub fn check(args: &CheckArgs) -> Result<(), Box<dyn Error>> {
     let path = report::write_report(&args.out, &page)
         .map_err(|e| format!("{}: {e}", args.out.join("report.html").display()))?;
     for r in &results {
-        if let crate::check::Outcome::Fail { what, suspects, .. } = &r.outcome {
+        if let Outcome::Fail { what, suspects, .. } = &r.outcome {
             println!("\npart {}, {}: {what}", r.check.part, r.check.name);
             for s in suspects.iter().take(3) {
                 let fit = if s.fits { "fits" } else { "does not fit" };

@@ -44,6 +44,9 @@ impl WideBvh {
         mut leaf: impl FnMut(WideLink, f32) -> Option<f32>,
     ) -> Option<f32> {
         let mut link = self.root?;
+        if !traversable(ray) {
+            return None;
+        }
         self.bounds.hit_distance(
             ray.origin.into(),
             (Vec3::ONE / ray.dir).into(),
@@ -84,6 +87,9 @@ impl WideBvh {
         let Some(root) = self.root else {
             return false;
         };
+        if !traversable(ray) {
+            return false;
+        }
         let inside = self.bounds.hit_distance(
             ray.origin.into(),
             (Vec3::ONE / ray.dir).into(),
@@ -112,6 +118,20 @@ impl WideBvh {
         }
         false
     }
+}
+
+/// Whether traversal can follow `ray`: a finite origin and direction.
+/// A ray that is not (NaN from an overflow upstream) meets nothing: its
+/// box tests would be NaN, and NaN lanes can mark empty child slots as
+/// hit. Callers should never send one (a debug assertion says so).
+#[inline(always)]
+fn traversable(ray: &Ray) -> bool {
+    let finite = ray.origin.is_finite() && ray.dir.is_finite();
+    debug_assert!(
+        finite,
+        "a ray that is not finite reached traversal: {ray:?}"
+    );
+    finite
 }
 
 impl WideBvh {

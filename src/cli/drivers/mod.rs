@@ -58,11 +58,40 @@ pub fn prepare(args: &CourseArgs) -> Result<Prepared> {
         lens.focal_distance = distance;
     }
     let camera = pinhole.with_lens(lens);
+    check_lens(&camera)?;
     Ok(Prepared {
         scene,
         primitives,
         camera,
     })
+}
+
+/// Refuses a lens whose camera rays are not finite numbers: a radius or
+/// focal distance so large (`-b 1e20`) that a ray's direction overflows
+/// when it is normalised. The rays through the film's corners and centre
+/// from the lens's rim and centre are the extremes.
+fn check_lens(camera: &Camera) -> Result<()> {
+    let points = [0.0, 0.5, 1.0];
+    for film in points
+        .iter()
+        .flat_map(|&x| points.map(|y| glam::Vec2::new(x, y)))
+    {
+        for lens in points
+            .iter()
+            .flat_map(|&x| points.map(|y| glam::Vec2::new(x, y)))
+        {
+            let ray = camera.generate_ray(&crate::raygen::CameraSample { film, lens });
+            if !(ray.origin.is_finite() && ray.dir.is_finite() && ray.dir.length() > 0.5) {
+                return Err(format!(
+                    "the lens (-b {:?} -d {:?}) makes camera rays that are not finite numbers; \
+                     use a smaller lens radius or focal distance",
+                    camera.lens.radius, camera.lens.focal_distance
+                )
+                .into());
+            }
+        }
+    }
+    Ok(())
 }
 
 /// The distance along the view axis from `camera` to the surface seen
