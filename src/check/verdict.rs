@@ -28,7 +28,7 @@ pub struct Suspect {
 /// What a check found.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Outcome {
-    /// `statistic <= threshold` (both `sum z^2` over the cells).
+    /// `statistic <= threshold` ([`stats::statistic`] and its chi-square bound).
     Pass { statistic: f64, threshold: f64 },
     Fail {
         statistic: f64,
