@@ -12,9 +12,10 @@ use crate::course::{
     Assignment, CourseExact, CourseSampling, CourseView, Lamps, StarterDirect, StarterTracer,
 };
 use crate::intersect::Primitives;
+use crate::math::Rgb;
 use crate::mistakes::{Mistake, Mistakes};
 use crate::raygen::Camera;
-use crate::render::{tone_map, RenderSettings};
+use crate::render::{quantize_display, tone_map, RenderSettings};
 use crate::sampling::SamplerKind;
 use crate::scene::Scene;
 
@@ -178,13 +179,7 @@ impl Stage {
             adaptive: None,
         };
         let rendered = exact.render(view, &self.accel, &tracer, &sampling);
-        let quantization = exact.quantization();
-        rendered
-            .film
-            .pixels
-            .iter()
-            .flat_map(|&p| tone_map(p).to_array())
-            .map(|v| quantization.apply(v))
-            .collect()
+        let display: Vec<Rgb> = rendered.film.pixels.iter().map(|&p| tone_map(p)).collect();
+        quantize_display(&display, exact.quantization())
     }
 }

@@ -69,21 +69,13 @@ pub fn table(results: &[CheckResult]) -> String {
         "part", "check", "verdict", "likely mistake", "look at"
     );
     for r in results {
-        let (verdict, mistake, function) = match &r.outcome {
-            Outcome::Pass { .. } => ("pass", String::new(), String::new()),
-            Outcome::Fail { suspects, .. } => {
-                let best = suspects.iter().find(|s| s.fits);
-                (
-                    "FAIL",
-                    best.map_or("none known fits".into(), |s| s.mistake.to_string()),
-                    best.map_or(r.check.function.to_string(), |s| {
-                        s.mistake.info().function.to_string()
-                    }),
-                )
-            }
-            Outcome::Skipped(why) => ("skipped", why.clone(), String::new()),
-            Outcome::Error(why) => ("error", why.clone(), String::new()),
+        let (mistake, function) = match (&r.outcome, r.outcome.likely_mistake()) {
+            (_, Some(m)) => (m.to_string(), m.info().function.to_string()),
+            (Outcome::Fail { .. }, None) => ("none known fits".into(), r.check.function.into()),
+            (Outcome::Skipped(why) | Outcome::Error(why), None) => (why.clone(), String::new()),
+            _ => (String::new(), String::new()),
         };
+        let verdict = r.outcome.word();
         text += &format!(
             "{:<4} {:<44} {:<8} {:<34} {}\n",
             r.check.part, r.check.name, verdict, mistake, function

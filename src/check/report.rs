@@ -10,7 +10,7 @@ use std::io::{self, Cursor};
 use std::path::{Path, PathBuf};
 
 use super::battery::SIZE;
-use super::stats::BLOCK;
+use super::stats::block_index;
 use super::verdict::{CheckImages, CheckResult, Outcome};
 use crate::math::ratio_colour;
 
@@ -51,14 +51,13 @@ fn data_uri(width: u32, height: u32, rgb: &[u8]) -> String {
 /// to 4 (red), and a colour bar of 12 rows under it.
 fn ratio_map(ratio: &[f64]) -> (u32, u32, Vec<u8>) {
     let (w, h) = (SIZE.0, SIZE.1 + 12);
-    let bw = SIZE.0.div_ceil(BLOCK);
     let mut rgb = Vec::with_capacity((w * h * 3) as usize);
     for y in 0..h {
         for x in 0..w {
             let t = if y >= SIZE.1 {
                 2.0 * x as f32 / (w - 1) as f32 - 1.0
             } else {
-                let r = ratio[((y / BLOCK) * bw + x / BLOCK) as usize];
+                let r = ratio[block_index(x, y, SIZE.0)];
                 (r.max(1e-6).log2() / 2.0) as f32
             };
             rgb.extend(
@@ -88,15 +87,6 @@ fn figure(caption: &str, width: u32, height: u32, rgb: &[u8]) -> String {
     )
 }
 
-fn verdict_word(outcome: &Outcome) -> &'static str {
-    match outcome {
-        Outcome::Pass { .. } => "pass",
-        Outcome::Fail { .. } => "FAIL",
-        Outcome::Skipped(_) => "skipped",
-        Outcome::Error(_) => "error",
-    }
-}
-
 fn section(i: usize, r: &CheckResult) -> String {
     let c = &r.check;
     let mut html = format!(
@@ -105,7 +95,7 @@ fn section(i: usize, r: &CheckResult) -> String {
         escape(c.name),
         c.function,
         escape(&c.flags(2).join(" ")),
-        v = verdict_word(&r.outcome)
+        v = r.outcome.word()
     );
     match &r.outcome {
         Outcome::Pass {
@@ -199,14 +189,12 @@ table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:0.2em 0.5em}<
         escape(scene)
     );
     for (i, r) in results.iter().enumerate() {
-        let likely = match &r.outcome {
-            Outcome::Fail { suspects, .. } => suspects
-                .iter()
-                .find(|s| s.fits)
-                .map_or("none known fits".to_string(), |s| s.mistake.to_string()),
+        let likely = match (&r.outcome, r.outcome.likely_mistake()) {
+            (_, Some(m)) => m.to_string(),
+            (Outcome::Fail { .. }, None) => "none known fits".to_string(),
             _ => String::new(),
         };
-        let v = verdict_word(&r.outcome);
+        let v = r.outcome.word();
         let _ = write!(
             page,
             r##"<tr><td>{}</td><td><a href="#check-{i}">{}</a></td><td class="{v}">{v}</td><td>{likely}</td></tr>"##,

@@ -46,6 +46,11 @@ pub struct NullModel {
     pub renders: usize,
 }
 
+/// The block of pixel `(x, y)` in an image `width` wide.
+pub fn block_index(x: u32, y: u32, width: u32) -> usize {
+    ((y / BLOCK) * width.div_ceil(BLOCK) + x / BLOCK) as usize
+}
+
 /// Per cell, the block mean of `rgb` (8-bit, three channels), in `[0, 1]`.
 pub fn cells(width: u32, height: u32, rgb: &[u8]) -> Vec<f64> {
     let (bw, bh) = (width.div_ceil(BLOCK), height.div_ceil(BLOCK));
@@ -53,7 +58,7 @@ pub fn cells(width: u32, height: u32, rgb: &[u8]) -> Vec<f64> {
     let mut counts = vec![0.0; (bw * bh) as usize];
     for y in 0..height {
         for x in 0..width {
-            let b = ((y / BLOCK) * bw + x / BLOCK) as usize;
+            let b = block_index(x, y, width);
             counts[b] += 1.0;
             for c in 0..3 {
                 sums[3 * b + c] += rgb[3 * (y * width + x) as usize + c] as f64 / 255.0;
@@ -85,12 +90,11 @@ impl NullModel {
             .map(|i| per_render.iter().map(|r| r[i]).sum::<f64>() / k as f64)
             .collect();
         // sum of the pixels' variances over n^2, per cell.
-        let bw = width.div_ceil(BLOCK);
         let mut variance = vec![0.0; c];
         let mut counts = vec![0.0; c];
         for y in 0..height {
             for x in 0..width {
-                let b = ((y / BLOCK) * bw + x / BLOCK) as usize;
+                let b = block_index(x, y, width);
                 for ch in 0..3 {
                     variance[3 * b + ch] += pixel_var[3 * (y * width + x) as usize + ch];
                     counts[3 * b + ch] += 1.0;

@@ -5,6 +5,7 @@
 use super::battery::{Check, Stage, SIZE};
 use super::stats::{self, chi_square_quantile, student_cells, NullModel, BLOCK};
 use super::student::{Capabilities, Student};
+use crate::math::{luminance, Rgb};
 use crate::mistakes::{Mistake, Mistakes};
 
 /// Renders of a correct solution in the null model.
@@ -50,6 +51,26 @@ pub struct CheckResult {
     pub outcome: Outcome,
     /// What the report shows, when the binary gave an image.
     pub images: Option<CheckImages>,
+}
+
+impl Outcome {
+    /// Its word in the table and the report.
+    pub fn word(&self) -> &'static str {
+        match self {
+            Outcome::Pass { .. } => "pass",
+            Outcome::Fail { .. } => "FAIL",
+            Outcome::Skipped(_) => "skipped",
+            Outcome::Error(_) => "error",
+        }
+    }
+
+    /// The best mistake that fits a failed image, if any.
+    pub fn likely_mistake(&self) -> Option<Mistake> {
+        match self {
+            Outcome::Fail { suspects, .. } => suspects.iter().find(|s| s.fits).map(|s| s.mistake),
+            _ => None,
+        }
+    }
 }
 
 /// The 8-bit images of a check (three bytes a pixel, [`SIZE`]).
@@ -160,7 +181,7 @@ fn mean_image(images: &[Vec<u8>]) -> Vec<u8> {
 
 /// Per block, the luminance ratio of cells `x` over `mean`, in radiance.
 fn block_ratios(x: &[f64], mean: &[f64]) -> Vec<f64> {
-    let lum = |c: &[f64]| 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+    let lum = |c: &[f64]| luminance(Rgb::new(c[0] as f32, c[1] as f32, c[2] as f32)) as f64;
     x.chunks(3)
         .zip(mean.chunks(3))
         .map(|(a, b)| match (lum(a), lum(b)) {

@@ -14,7 +14,7 @@ pub mod tiles;
 
 pub use film::Film;
 pub use output::{
-    check_output_path, tone_map, write_image, write_image_quantized, write_png,
+    check_output_path, quantize_display, tone_map, write_image, write_image_quantized, write_png,
     write_png_quantized, OutputError, OutputFormat, Quantization, OUTPUT_FORMATS,
 };
 pub use rendered::Rendered;

@@ -136,6 +136,15 @@ impl Quantization {
     }
 }
 
+/// The 8-bit values of display values in `[0, 1]`, three bytes a pixel,
+/// as a PNG holds them.
+pub fn quantize_display(display: &[Rgb], quantization: Quantization) -> Vec<u8> {
+    display
+        .iter()
+        .flat_map(|p| p.to_array().map(|v| quantization.apply(v)))
+        .collect()
+}
+
 /// Writes `film` to `path` in the format its name asks for: PNG (tone
 /// mapped) for `.png`, OpenEXR (linear) for `.exr`; any other name is an
 /// error and nothing is written.
@@ -172,10 +181,7 @@ pub fn write_png_quantized(
     path: &Path,
     quantization: Quantization,
 ) -> Result<(), OutputError> {
-    let data = display
-        .iter()
-        .flat_map(|p| p.to_array().map(|v| quantization.apply(v)))
-        .collect();
+    let data = quantize_display(display, quantization);
     let image = RgbImage::from_raw(width, height, data).map(DynamicImage::from);
     encode_and_write(image, ImageFormat::Png, path)
 }

@@ -176,7 +176,8 @@ pub fn write_scene_dae(scene: &Scene, out: &mut impl Write) -> io::Result<()> {
         );
     }
     doc += "</library_materials>\n<library_geometries>";
-    write_mesh(scene, &mut doc);
+    let mesh_materials = used_materials(scene);
+    write_mesh(scene, &mesh_materials, &mut doc);
     for (i, sphere) in scene.spheres.iter().enumerate() {
         let _ = write!(
             doc,
@@ -204,8 +205,9 @@ pub fn write_scene_dae(scene: &Scene, out: &mut impl Write) -> io::Result<()> {
         format!("<bind_material><technique_common>{instances}</technique_common></bind_material>")
     };
     if !scene.mesh.triangles.is_empty() {
-        let instances: String = used_materials(scene)
-            .into_iter()
+        let instances: String = mesh_materials
+            .iter()
+            .copied()
             .map(|m| instance(format!("m{m}"), m))
             .collect();
         let _ = writeln!(
@@ -235,8 +237,8 @@ fn used_materials(scene: &Scene) -> Vec<u32> {
 }
 
 /// The mesh: its positions in file space and a `<triangles>` element per
-/// material.
-fn write_mesh(scene: &Scene, doc: &mut String) {
+/// material of `materials` (those its triangles use).
+fn write_mesh(scene: &Scene, materials: &[u32], doc: &mut String) {
     let mesh = &scene.mesh;
     if mesh.triangles.is_empty() {
         return;
@@ -254,7 +256,7 @@ fn write_mesh(scene: &Scene, doc: &mut String) {
         doc,
         r##"</float_array><technique_common><accessor source="#pos-array" count="{n}" stride="3"/></technique_common></source><vertices id="vtx"><input semantic="POSITION" source="#pos"/></vertices>"##
     );
-    for m in used_materials(scene) {
+    for &m in materials {
         let triangles: Vec<&[u32; 3]> = mesh
             .triangles
             .iter()

@@ -61,7 +61,9 @@ fn run(args: &CourseArgs, part: CoursePart, exact: CourseExact) -> Result<()> {
         primitives,
         camera,
     } = prepare(args)?;
-    let environment = environment_light(args)?;
+    // Built with the handout's weights, so the course's render keeps it
+    // as it is.
+    let environment = environment_light(args, exact.environment_weights())?;
     let tracer = StarterTracer {
         direct: StarterDirect::from_hemisphere(args.hemisphere),
         light_samples: args.light_samples,

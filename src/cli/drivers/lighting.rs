@@ -10,6 +10,7 @@ use crate::cli::CourseArgs;
 use crate::direct::{DirectHemisphere, DirectLights};
 use crate::environment::{
     builtin_sky, EnvironmentError, EnvironmentLight, EnvironmentMap, EnvironmentSampling,
+    EnvironmentWeights,
 };
 use crate::global::{DirectStrategy, PathTracer, Roulette};
 use crate::intersect::Intersector;
@@ -66,9 +67,11 @@ struct Part {
 
 /// The environment light the flags ask for: the map of `-e` (read and
 /// checked here, errors naming the file), else the built-in sky when the
-/// binary asks for it, else none; sampled uniformly with `--env-uniform`.
+/// binary asks for it, else none; sampled uniformly with `--env-uniform`,
+/// else by importance with its cells weighted by `weights`.
 pub fn environment_light(
     args: &CourseArgs,
+    weights: EnvironmentWeights,
 ) -> std::result::Result<Option<EnvironmentLight>, EnvironmentError> {
     let map = match &args.environment {
         Some(path) => EnvironmentMap::load(path)?,
@@ -80,7 +83,7 @@ pub fn environment_light(
     } else {
         EnvironmentSampling::Importance
     };
-    Ok(Some(EnvironmentLight::new(map, sampling)))
+    Ok(Some(EnvironmentLight::with_weights(map, sampling, weights)))
 }
 
 fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
@@ -89,7 +92,7 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
         primitives,
         camera,
     } = prepare(args)?;
-    let environment = environment_light(args)?;
+    let environment = environment_light(args, EnvironmentWeights::default())?;
     if let Some(env) = &environment {
         let map = env.map();
         let line = format!(
