@@ -3,6 +3,14 @@
 /// Linear RGB radiance, irradiance or reflectance, one `f32` per channel.
 pub type Rgb = glam::Vec3;
 
+/// The largest radiance (or intensity, or environment texel) a scene may
+/// give, per channel. A render multiplies radiance by throughputs and
+/// `1/pdf` factors and sums it over samples; keeping it below `1e15`
+/// leaves 23 orders of magnitude before `f32::MAX` (3.4e38), where a
+/// pixel would overflow to infinity. Real scenes stay far below: a sun
+/// texel of a photographed sky is about `1e5`.
+pub const MAX_RADIANCE: f32 = 1e15;
+
 /// Luminance ("illuminance" in the course) of a linear Rec. 709 colour:
 /// `Y = 0.2126 r + 0.7152 g + 0.0722 b`.
 pub fn luminance(c: Rgb) -> f32 {

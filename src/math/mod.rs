@@ -14,5 +14,5 @@ pub mod rng;
 pub mod special;
 pub mod warp;
 
-pub use color::{luminance, ratio_colour, Rgb};
+pub use color::{luminance, ratio_colour, Rgb, MAX_RADIANCE};
 pub use frame::Frame;
