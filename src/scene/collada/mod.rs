@@ -5,6 +5,7 @@
 //!
 //! | module | reads |
 //! | --- | --- |
+//! | `nesting` | how deep elements nest, refused past a limit before parsing |
 //! | `xml` | element lookup, `#id` references, element paths for errors |
 //! | `numbers` | number lists, counts, colours (finite values only) |
 //! | `transform` | node matrices and the Z_UP map G: `(x, y, z) -> (-x, z, y)` |
@@ -28,6 +29,7 @@ mod geometry;
 mod light;
 mod material;
 mod mesh;
+mod nesting;
 mod numbers;
 mod source;
 mod transform;
@@ -57,6 +59,7 @@ pub fn load_str(text: &str, file: &str) -> Result<Scene, SceneError> {
     if text.trim().is_empty() {
         return Err(SceneError::new(file, "", "the file is empty"));
     }
+    nesting::check_nesting(text, file)?;
     let document = roxmltree::Document::parse(text)
         .map_err(|e| SceneError::new(file, "", format!("malformed XML: {e}")))?;
     let root = document.root_element();
