@@ -74,7 +74,7 @@ pub fn check(args: &CheckArgs) -> Result<(), Box<dyn Error>> {
         bar.inc(1);
     }
     bar.finish_and_clear();
-    print!("{}", table(&results));
+    crate::cli::say::text(&table(&results))?;
     let page = report::html(
         &student.binary.to_string_lossy(),
         &scene_file.to_string_lossy(),
@@ -84,13 +84,13 @@ pub fn check(args: &CheckArgs) -> Result<(), Box<dyn Error>> {
         .map_err(|e| format!("{}: {e}", args.out.join("report.html").display()))?;
     for r in &results {
         if let Outcome::Fail { what, suspects, .. } = &r.outcome {
-            println!("\npart {}, {}: {what}", r.check.part, r.check.name);
+            crate::say!("\npart {}, {}: {what}", r.check.part, r.check.name)?;
             for s in suspects.iter().take(3) {
                 let fit = if s.fits { "fits" } else { "does not fit" };
-                println!("  {} ({fit}; misfit {:.2} per cell)", s.mistake, s.misfit);
+                crate::say!("  {} ({fit}; misfit {:.2} per cell)", s.mistake, s.misfit)?;
             }
         }
     }
-    println!("\nwrote {}", path.display());
+    crate::say!("\nwrote {}", path.display())?;
     Ok(())
 }

@@ -8,6 +8,7 @@
 //! threads or the order tiles finish in.
 
 pub mod film;
+pub mod memory;
 pub mod output;
 pub mod rendered;
 pub mod tiles;

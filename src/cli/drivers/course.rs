@@ -48,8 +48,7 @@ impl CoursePart {
 /// `--course-exact` is not given.
 pub fn render(args: &CourseArgs, part: CoursePart) -> Option<Result<()>> {
     if args.lists_mistakes() {
-        print!("{}", Mistake::catalogue());
-        return Some(Ok(()));
+        return Some(crate::cli::say::text(&Mistake::catalogue()).map_err(Into::into));
     }
     let exact = args.course_exact(part.assignment)?;
     Some(run(args, part, exact))
@@ -95,12 +94,12 @@ fn run(args: &CourseArgs, part: CoursePart, exact: CourseExact) -> Result<()> {
         },
     );
     if args.info {
-        print!("{}", describe(&scene, &camera));
-        println!("{course_line}");
+        crate::cli::say::text(&describe(&scene, &camera))?;
+        crate::say!("{course_line}")?;
         return Ok(());
     }
-    eprintln!("{course_line}");
-    let accel = build_wide_bvh(&scene.source, primitives);
+    crate::warning!("{course_line}");
+    let accel = build_wide_bvh(&scene.source, primitives)?;
     let view = CourseView {
         scene: &scene,
         camera: &camera,
@@ -111,14 +110,14 @@ fn run(args: &CourseArgs, part: CoursePart, exact: CourseExact) -> Result<()> {
         adaptive,
     };
     let rendered = exact.render(view, &accel, &tracer, &sampling);
-    report_render(&rendered);
+    report_render(&rendered)?;
     let path = args.output_path();
     write_image_quantized(&rendered.film, &path, exact.quantization())?;
-    println!("wrote {}", path.display());
+    crate::say!("wrote {}", path.display())?;
     if part.rate_image {
         let rate = rate_image_path(&path);
         rendered.write_rate_image(sampling.settings.samples_per_pixel, &rate)?;
-        println!("wrote {}", rate.display());
+        crate::say!("wrote {}", rate.display())?;
     }
     Ok(())
 }

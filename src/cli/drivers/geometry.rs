@@ -41,18 +41,18 @@ fn refuse_course_image(args: &CourseArgs, binary: &str) -> Result<()> {
 
 pub fn part1(args: &CourseArgs) -> Result<()> {
     refuse_course_image(args, "part1-raygen")?;
-    let Some(mut p) = describe_or(prepare(args)?, args) else {
+    let Some(mut p) = describe_or(prepare(args)?, args)? else {
         return Ok(());
     };
     p.primitives.triangle_test = TriangleTest::MollerTrumbore;
-    println!(
+    crate::say!(
         "{}: {} primitives, linear scan, Möller-Trumbore triangles",
         p.scene.source,
         p.primitives.len()
-    );
+    )?;
     let settings = args.render_settings();
     let rendered = render_normals(LinearScan::new(&p.primitives), &p.camera, &settings);
-    report_render(&rendered);
+    report_render(&rendered)?;
     write_film(&rendered, args)
 }
 
@@ -60,7 +60,7 @@ pub fn part1(args: &CourseArgs) -> Result<()> {
 /// speed-up over part 1's linear scan.
 pub fn part2(args: &CourseArgs) -> Result<()> {
     refuse_course_image(args, "part2-bvh")?;
-    let Some(p) = describe_or(prepare(args)?, args) else {
+    let Some(p) = describe_or(prepare(args)?, args)? else {
         return Ok(());
     };
     let count = p.primitives.len();
@@ -68,19 +68,19 @@ pub fn part2(args: &CourseArgs) -> Result<()> {
     let accel = BvhAccel::new(p.primitives);
     let build = start.elapsed().as_secs_f64();
     let (leaves, depth) = accel.bvh.leaf_stats();
-    println!(
+    crate::say!(
         "{}: {count} primitives, BVH build {build:.3} s ({} nodes, {leaves} leaves, depth {depth})",
         p.scene.source,
         accel.bvh.nodes.len()
-    );
+    )?;
     let settings = args.render_settings();
     let rendered = render_normals(&accel, &p.camera, &settings);
-    report_render(&rendered);
+    report_render(&rendered)?;
     let speedup = measure_speedup(&accel, &p.camera, &settings);
-    println!(
+    crate::say!(
         "speed-up over the linear scan: {:.1}x (one thread, {} of {} pixels, {} disagreements)",
         speedup.ratio, speedup.rays, speedup.pixels, speedup.disagreements
-    );
+    )?;
     write_film(&rendered, args)
 }
 
@@ -149,13 +149,13 @@ pub fn bvh_benchmark(threads: Option<usize>, accel: AccelArg) -> Result<()> {
                 (accel, [build])
             });
             let (leaves, depth) = accel.bvh.leaf_stats();
-            println!("binary BVH: build {}", times[0]);
-            println!(
+            crate::say!("binary BVH: build {}", times[0])?;
+            crate::say!(
                 "triangles {} nodes {} leaves {leaves} depth {depth}",
                 accel.primitives.len(),
                 accel.bvh.nodes.len()
-            );
-            trace_benchmark_sets(&accel, threads);
+            )?;
+            trace_benchmark_sets(&accel, threads)?;
         }
         AccelArg::Wide => {
             let (accel, [total, binary, collapse]) = best_of_builds(|| {
@@ -163,15 +163,15 @@ pub fn bvh_benchmark(threads: Option<usize>, accel: AccelArg) -> Result<()> {
                 (accel, [binary + collapse, binary, collapse])
             });
             let (leaves, depth, lanes) = accel.wide.leaf_stats();
-            println!("wide BVH: build {total} (binary SAH build {binary}, collapse {collapse})");
-            println!(
+            crate::say!("wide BVH: build {total} (binary SAH build {binary}, collapse {collapse})")?;
+            crate::say!(
                 "triangles {} nodes {} leaves {leaves} depth {depth} packs {} lanes used {:.1} %",
                 accel.primitives.len(),
                 accel.wide.nodes.len(),
                 accel.wide.packs.len(),
                 100.0 * lanes as f64 / (4 * accel.wide.packs.len()).max(1) as f64
-            );
-            trace_benchmark_sets(&accel, threads);
+            )?;
+            trace_benchmark_sets(&accel, threads)?;
         }
     }
     Ok(())
@@ -205,16 +205,17 @@ fn best_of_builds<A, const N: usize>(build: impl Fn() -> (A, [f64; N])) -> (A, [
 
 /// The benchmark's ray sets through `accel`, one thread, then `threads`,
 /// for the closest primitive; then, on one thread, for full hit records.
-fn trace_benchmark_sets(accel: &impl Intersector, threads: Option<usize>) {
+fn trace_benchmark_sets(accel: &impl Intersector, threads: Option<usize>) -> Result<()> {
     use crate::bvh::throughput::{measure, ray_sets, Query};
     let all = threads.unwrap_or_else(rayon::current_num_threads);
     let counts = if all > 1 { vec![1, all] } else { vec![1] };
     for set in &ray_sets(accel, 1024, 1 << 20) {
         for &t in &counts {
-            println!("{}", measure(accel, set, Query::Nearest, t));
+            crate::say!("{}", measure(accel, set, Query::Nearest, t))?;
         }
-        println!("{}", measure(accel, set, Query::Record, 1));
+        crate::say!("{}", measure(accel, set, Query::Record, 1))?;
     }
+    Ok(())
 }
 
 /// `part2-bvh --scaling`: build time and one-thread ray rates of the
@@ -223,8 +224,8 @@ pub fn bvh_scaling() -> Result<()> {
     use crate::bvh::throughput::{
         build_benchmark_bvh, measure, primary_rays, random_rays, Query, RaySet,
     };
-    println!("| triangles | build (s) | primary 1T (Mrays/s) | random 1T (Mrays/s) |");
-    println!("| ---: | ---: | ---: | ---: |");
+    crate::say!("| triangles | build (s) | primary 1T (Mrays/s) | random 1T (Mrays/s) |")?;
+    crate::say!("| ---: | ---: | ---: | ---: |")?;
     for k in 0..6 {
         let (phi, theta) = (32 << k, 16 << k);
         let (accel, build) = build_benchmark_bvh(phi, theta);
@@ -233,10 +234,10 @@ pub fn bvh_scaling() -> Result<()> {
         };
         let primary = rate("primary", primary_rays(512));
         let random = rate("random", random_rays(1 << 18));
-        println!(
+        crate::say!(
             "| {} | {build:.4} | {primary:.2} | {random:.2} |",
             accel.primitives.len()
-        );
+        )?;
     }
     Ok(())
 }

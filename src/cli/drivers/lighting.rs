@@ -106,14 +106,14 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
             }
         );
         if args.info {
-            println!("{line}");
+            crate::say!("{line}")?;
         } else {
-            eprintln!("{line}");
+            crate::warning!("{line}");
         }
     }
     let part = part(&scene)?;
     if args.info {
-        print!("{}", describe(&scene, &camera));
+        crate::cli::say::text(&describe(&scene, &camera))?;
         let mut lights = LightSet::new(&scene, args.world_options().light_convention);
         if let Some(env) = environment {
             lights = lights.with_environment(env);
@@ -121,18 +121,20 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
         let plan = Plan::new(&scene, &lights, &part.tracer, &camera.lens)
             .with_sampler(args.sampler_kind())
             .with_casters(&Casters::new(&scene, &lights, args.world_options().casters));
-        plan.lines.iter().for_each(|line| println!("{line}"));
-        plan.warnings
-            .iter()
-            .for_each(|w| println!("plan: note: {w}"));
+        for line in &plan.lines {
+            crate::say!("{line}")?;
+        }
+        for w in &plan.warnings {
+            crate::say!("plan: note: {w}")?;
+        }
         return Ok(());
     }
-    let accel = build_wide_bvh(&scene.source, primitives);
+    let accel = build_wide_bvh(&scene.source, primitives)?;
     let world =
         World::with_options(&scene, &accel, args.world_options()).with_environment(environment);
     let plan = Plan::new(&scene, &world.lights, &part.tracer, &camera.lens);
     for warning in &plan.warnings {
-        eprintln!("warning: {}: {warning}", scene.source);
+        crate::warning!("warning: {}: {warning}", scene.source);
     }
     let tracer = if args.no_plan {
         part.tracer
@@ -141,27 +143,27 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
     };
     let settings = args.render_settings();
     let rendered = render_lighting(&world, &tracer, &camera, &settings, part.adaptive);
-    report_render(&rendered);
+    report_render(&rendered)?;
     let bound = match settings.sampler {
         SamplerKind::ZSobol => ", assuming independent samples: an upper bound with zsobol",
         SamplerKind::Independent => "",
     };
     match rendered.relative_error() {
-        Some(e) => println!("noise: relative standard error {:.2} % (RMS of pixel standard errors / mean luminance{bound})", 100.0 * e),
-        None => println!("noise: not estimated (needs at least 2 samples per pixel)"),
+        Some(e) => crate::say!("noise: relative standard error {:.2} % (RMS of pixel standard errors / mean luminance{bound})", 100.0 * e)?,
+        None => crate::say!("noise: not estimated (needs at least 2 samples per pixel)")?,
     }
     if part.adaptive.is_some() {
-        println!(
+        crate::say!(
             "adaptive: mean samples per pixel {:.2} of {}",
             rendered.mean_samples_per_pixel(),
             settings.samples_per_pixel
-        );
+        )?;
     }
     write_film(&rendered, args)?;
     if part.rate_image {
         let path = rate_image_path(&args.output_path());
         rendered.write_rate_image(settings.samples_per_pixel, &path)?;
-        println!("wrote {}", path.display());
+        crate::say!("wrote {}", path.display())?;
     }
     Ok(())
 }

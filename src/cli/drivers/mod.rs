@@ -38,7 +38,7 @@ pub fn prepare(args: &CourseArgs) -> Result<Prepared> {
     check_output(args)?;
     let scene = args.load_scene()?;
     for warning in &scene.warnings {
-        eprintln!("warning: {}: {warning}", scene.source);
+        crate::warning!("warning: {}: {warning}", scene.source);
     }
     let primitives = Primitives::from_scene(&scene);
     let pinhole = Camera::course_placement(
@@ -53,7 +53,7 @@ pub fn prepare(args: &CourseArgs) -> Result<Prepared> {
         let size = (args.width(), args.height());
         let distance = focus_distance(&pinhole, &primitives, size, (x, y))?;
         if args.info {
-            println!("focus: pixel ({x}, {y}) sees a surface at distance {distance:.4} (-d {distance:.4})");
+            crate::say!("focus: pixel ({x}, {y}) sees a surface at distance {distance:.4} (-d {distance:.4})")?;
         }
         lens.focal_distance = distance;
     }
@@ -121,55 +121,59 @@ pub fn focus_distance(
 /// Fails, before any render, when the image `-f` (or the default name)
 /// asks for cannot be written: a name that is neither `.png` nor `.exr`, a
 /// folder that does not exist or does not take a new file
-/// ([`crate::render::check_output_path`]). Nothing to check with `--info`,
+/// ([`crate::render::check_output_path`]), or a size that does not fit in
+/// the memory available ([`crate::render::memory`]). Nothing to check with `--info`,
 /// which writes no image. [`prepare`] calls it first, so every driver does.
 pub fn check_output(args: &CourseArgs) -> Result<()> {
     if !args.info {
         crate::render::check_output_path(&args.output_path())?;
+        let available = crate::render::memory::available_bytes();
+        crate::render::memory::check_image_memory(args.width(), args.height(), available)?;
     }
     Ok(())
 }
 
 /// With `--info`, prints the scene's summary and gives `None`.
-fn describe_or(prepared: Prepared, args: &CourseArgs) -> Option<Prepared> {
+fn describe_or(prepared: Prepared, args: &CourseArgs) -> Result<Option<Prepared>> {
     if args.info {
-        print!("{}", describe(&prepared.scene, &prepared.camera));
-        None
+        crate::cli::say::text(&describe(&prepared.scene, &prepared.camera))?;
+        Ok(None)
     } else {
-        Some(prepared)
+        Ok(Some(prepared))
     }
 }
 
 /// Prints render time, ray rate, rejected samples and non-finite pixels.
-fn report_render(rendered: &Rendered) {
+fn report_render(rendered: &Rendered) -> Result<()> {
     let stats = &rendered.stats;
-    println!(
+    crate::say!(
         "render: {:.3} s on {} threads, {} camera rays/s",
         stats.seconds,
         stats.threads,
         si(rendered.samples() as f64 / stats.seconds)
-    );
-    println!(
+    )?;
+    crate::say!(
         "samples: {} camera rays, {} rejected (NaN or infinite radiance, left out of the mean)",
         rendered.samples(),
         rendered.rejected()
-    );
+    )?;
+    Ok(())
 }
 
 /// The wide SIMD BVH over `primitives` (the binary one's hits, faster:
 /// docs/03-bvh.md), timed and reported under `source`.
-fn build_wide_bvh(source: &str, primitives: Primitives) -> crate::bvh::WideBvhAccel {
+fn build_wide_bvh(source: &str, primitives: Primitives) -> Result<crate::bvh::WideBvhAccel> {
     let start = std::time::Instant::now();
     let accel = crate::bvh::WideBvhAccel::new(primitives);
-    println!("{source}: BVH build {:.3} s", start.elapsed().as_secs_f64());
-    accel
+    crate::say!("{source}: BVH build {:.3} s", start.elapsed().as_secs_f64())?;
+    Ok(accel)
 }
 
 /// Writes the film where `-f` (or the default) says and tells where.
 fn write_film(rendered: &Rendered, args: &CourseArgs) -> Result<()> {
     let path = args.output_path();
     crate::render::write_image(&rendered.film, &path)?;
-    println!("wrote {}", path.display());
+    crate::say!("wrote {}", path.display())?;
     Ok(())
 }
 
