@@ -74,7 +74,10 @@ fn an_image_too_big_for_memory_is_refused_before_the_render() {
     let available = std::fs::read_to_string("/proc/meminfo")
         .ok()
         .and_then(|t| {
-            let line = t.lines().find(|l| l.starts_with("MemAvailable:"))?.to_owned();
+            let line = t
+                .lines()
+                .find(|l| l.starts_with("MemAvailable:"))?
+                .to_owned();
             line.split_whitespace().nth(1)?.parse::<u64>().ok()
         })
         .map(|kib| kib * 1024);
@@ -92,7 +95,10 @@ fn an_image_too_big_for_memory_is_refused_before_the_render() {
         .unwrap();
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{stderr}");
-    assert!(stderr.contains("16384 x 16384 image needs about"), "{stderr}");
+    assert!(
+        stderr.contains("16384 x 16384 image needs about"),
+        "{stderr}"
+    );
     assert!(stderr.contains("GB is available"), "{stderr}");
     assert!(!image.exists());
 }

@@ -79,6 +79,8 @@ mod tests {
         assert!(closed.is_closed_pipe());
         let full = StdoutError(io::Error::from_raw_os_error(28));
         assert!(!full.is_closed_pipe());
-        assert!(full.to_string().starts_with("cannot write to standard output"));
+        assert!(full
+            .to_string()
+            .starts_with("cannot write to standard output"));
     }
 }

@@ -67,7 +67,10 @@ mod tests {
     #[test]
     fn mem_available_is_read_from_meminfo() {
         let text = "MemTotal:       24000000 kB\nMemAvailable:   22000000 kB\n";
-        assert_eq!(parse_mem_available(text), Some(22_000_000_000 * 1024 / 1000));
+        assert_eq!(
+            parse_mem_available(text),
+            Some(22_000_000_000 * 1024 / 1000)
+        );
         assert_eq!(parse_mem_available("MemTotal: 1 kB\n"), None);
     }
 }

@@ -37,8 +37,9 @@ pub struct Prepared {
 pub fn prepare(args: &CourseArgs) -> Result<Prepared> {
     check_output(args)?;
     let scene = args.load_scene()?;
+    // The loader's warnings name the file and the element themselves.
     for warning in &scene.warnings {
-        crate::warning!("warning: {}: {warning}", scene.source);
+        crate::warning!("warning: {warning}");
     }
     let primitives = Primitives::from_scene(&scene);
     let pinhole = Camera::course_placement(

@@ -13,6 +13,7 @@
 use roxmltree::Node;
 
 use super::super::SceneError;
+use super::fields::Fields;
 use super::mesh::{mesh, LocalMesh};
 use super::numbers::single_float;
 use super::xml::{cgl_technique, child, require_child, Doc};
@@ -38,9 +39,10 @@ pub fn shape(
         return Ok(Some(Shape::Mesh(mesh(doc, m, warnings)?)));
     }
     let sphere = child(geometry, "extra")
-        .and_then(cgl_technique)
+        .and_then(|e| cgl_technique(doc, e))
         .and_then(|t| child(t, "sphere"));
     if let Some(sphere) = sphere {
+        Fields::new(doc, sphere, &["radius"]);
         let radius_node = require_child(doc, sphere, "radius")?;
         let radius = single_float(doc, radius_node)?;
         if radius < 0.0 {

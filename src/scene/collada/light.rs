@@ -19,14 +19,16 @@
 //! - `ambient`: a uniform sky, radiance = colour.
 //! - `spot`: position and direction as above; it contributes nothing.
 //!
-//! Unknown kinds, and directions that come out undefined (zero length), are
+//! The colour is radiance or intensity: negative values and values above
+//! `MAX_RADIANCE` are errors; unknown fields are warnings
+//! (`super::fields`). Unknown kinds, and directions that come out undefined (zero length), are
 //! skipped with a warning rather than failing the whole scene.
 
 use glam::Vec3;
 use roxmltree::Node;
 
 use super::super::{Light, SceneError};
-use super::numbers::color;
+use super::fields::{Fields, RADIANCE};
 use super::transform::Placement;
 use super::xml::{cgl_technique, child, first_element, require_child, Doc};
 
@@ -39,7 +41,7 @@ pub fn light(
     warnings: &mut Vec<String>,
 ) -> Result<Option<Light>, SceneError> {
     let technique = child(light, "extra")
-        .and_then(cgl_technique)
+        .and_then(|e| cgl_technique(doc, e))
         .or_else(|| child(light, "technique_common"));
     let Some(kind) = technique.and_then(first_element) else {
         warnings.push(doc.note(light, "no light description; the light is skipped"));
@@ -50,7 +52,8 @@ pub fn light(
         warnings.push(doc.note(kind, "unknown light kind; the light is skipped"));
         return Ok(None);
     }
-    let rgb = color(doc, require_child(doc, kind, "color")?)?;
+    require_child(doc, kind, "color")?;
+    let rgb = Fields::new(doc, kind, light_fields(name)).colour("color", Vec3::ZERO, RADIANCE)?;
     let center = place.point(Vec3::ZERO);
     let front = place.point(Vec3::NEG_Z);
     // The course's direction for directional and spot lights keeps the
@@ -90,6 +93,29 @@ pub fn light(
             direction,
         },
     }))
+}
+
+/// The fields a light of kind `name` has (COLLADA 1.4.1, section 5): the
+/// colour, and the attenuation and falloff the course reads and ignores.
+fn light_fields(name: &str) -> &'static [&'static str] {
+    const ATTENUATION: [&str; 4] = [
+        "color",
+        "constant_attenuation",
+        "linear_attenuation",
+        "quadratic_attenuation",
+    ];
+    match name {
+        "point" => &ATTENUATION,
+        "spot" => &[
+            "color",
+            "constant_attenuation",
+            "linear_attenuation",
+            "quadratic_attenuation",
+            "falloff_angle",
+            "falloff_exponent",
+        ],
+        _ => &["color"],
+    }
 }
 
 #[cfg(test)]

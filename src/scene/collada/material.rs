@@ -14,7 +14,10 @@
 //! | `refraction` | `transmittance` (1 1 1), `roughness` (0), `ior` (1.5) |
 //! | `microfacet` | `alpha` (0.5), `eta` and `k` (copper: 0.33228 1.0162 1.2474 and 3.1646 2.5785 2.4603, the format doc's example) |
 //!
-//! A colour field takes one number (grey) or three. Otherwise the material
+//! A colour field takes one number (grey) or three. Unknown or repeated
+//! fields are warnings and values out of range errors (`super::fields`);
+//! a technique that was meant as CGL but is not spelled `profile="CGL"`
+//! exactly is ignored with a warning, as the course's reader ignores it. Otherwise the material
 //! is diffuse with the `<diffuse><color>` of the effect's
 //! phong/lambert/blinn shader (albedo 0.5, the course's default, when there
 //! is none or it is a texture). An unknown CGL BSDF is an error.
@@ -22,17 +25,22 @@
 use roxmltree::Node;
 
 use super::super::{Material, SceneError};
-use super::numbers::{color, single_float};
-use super::xml::{child, descend, first_element, require_child, Doc};
+use super::fields::{Fields, ALPHA, CONDUCTOR, IOR, RADIANCE, REFLECTANCE, ROUGHNESS};
+use super::xml::{child, descend, first_element, is_cgl, require_child, Doc};
 use crate::math::Rgb;
 
 /// The material `material` (a `<material>` element) describes.
 pub fn material(doc: &Doc, material: Node) -> Result<Material, SceneError> {
     let instance = require_child(doc, material, "instance_effect")?;
     let effect = doc.resolve(instance, "url", "effect")?;
-    let cgl = effect
-        .descendants()
-        .find(|n| n.has_tag_name("technique") && n.attribute("profile") == Some("CGL"));
+    let mut cgl = None;
+    for technique in effect.descendants().filter(|n| n.has_tag_name("technique")) {
+        if is_cgl(doc, technique) {
+            cgl = cgl.or(Some(technique));
+        } else if technique.attribute("profile").is_none() {
+            warn_if_names_a_bsdf(doc, technique);
+        }
+    }
     match cgl {
         Some(technique) => cgl_bsdf(doc, technique),
         None => Ok(Material::Diffuse {
@@ -41,48 +49,72 @@ pub fn material(doc: &Doc, material: Node) -> Result<Material, SceneError> {
     }
 }
 
+/// The BSDFs a CGL technique can name.
+const CGL_BSDFS: [&str; 5] = ["emission", "mirror", "glass", "refraction", "microfacet"];
+
+/// Warns about a `<technique>` without a profile whose first element is
+/// a CGL BSDF: meant as CGL, but the course's reader ignores it, and so
+/// the material is diffuse.
+fn warn_if_names_a_bsdf(doc: &Doc, technique: Node) {
+    if first_element(technique).is_some_and(|b| CGL_BSDFS.contains(&b.tag_name().name())) {
+        doc.warn(
+            technique,
+            "a technique without profile=\"CGL\" names a CGL material; \
+             it is ignored, as the course ignores it",
+        );
+    }
+}
+
 /// The BSDF a CGL technique names.
 fn cgl_bsdf(doc: &Doc, technique: Node) -> Result<Material, SceneError> {
     let Some(bsdf) = first_element(technique) else {
         return Err(doc.err(technique, "the CGL technique names no material"));
     };
-    let rgb = |name: &str, default: f32| -> Result<Rgb, SceneError> {
-        child(bsdf, name).map_or(Ok(Rgb::splat(default)), |n| color(doc, n))
-    };
-    let number = |name: &str, default: f32| -> Result<f32, SceneError> {
-        child(bsdf, name).map_or(Ok(default), |n| single_float(doc, n))
-    };
-    let positive = |name: &str, default: f32| -> Result<f32, SceneError> {
-        let x = number(name, default)?;
-        if x > 0.0 {
-            Ok(x)
-        } else {
-            Err(doc.err(bsdf, format!("<{name}> must be positive, found {x}")))
+    if let Some(extra) = bsdf.next_siblings().skip(1).find(Node::is_element) {
+        doc.warn(
+            extra,
+            "the CGL technique names more than one material; the first is used",
+        );
+    }
+    let name = bsdf.tag_name().name();
+    let material = match name {
+        "emission" => {
+            let f = Fields::new(doc, bsdf, &["radiance"]);
+            Material::Emission {
+                radiance: f.colour("radiance", Rgb::ONE, RADIANCE)?,
+            }
         }
-    };
-    let material = match bsdf.tag_name().name() {
-        "emission" => Material::Emission {
-            radiance: rgb("radiance", 1.0)?,
-        },
-        "mirror" => Material::Mirror {
-            reflectance: rgb("reflectance", 1.0)?,
-        },
-        "glass" => Material::Glass {
-            reflectance: rgb("reflectance", 1.0)?,
-            transmittance: rgb("transmittance", 1.0)?,
-            roughness: number("roughness", 0.0)?,
-            ior: positive("ior", 1.5)?,
-        },
-        "refraction" => Material::Refraction {
-            transmittance: rgb("transmittance", 1.0)?,
-            roughness: number("roughness", 0.0)?,
-            ior: positive("ior", 1.5)?,
-        },
-        "microfacet" => Material::Microfacet {
-            alpha: positive("alpha", 0.5)?,
-            eta: child(bsdf, "eta").map_or(Ok(COPPER_ETA), |n| color(doc, n))?,
-            k: child(bsdf, "k").map_or(Ok(COPPER_K), |n| color(doc, n))?,
-        },
+        "mirror" => {
+            let f = Fields::new(doc, bsdf, &["reflectance"]);
+            Material::Mirror {
+                reflectance: f.colour("reflectance", Rgb::ONE, REFLECTANCE)?,
+            }
+        }
+        "glass" => {
+            let f = Fields::new(doc, bsdf, &["reflectance", "transmittance", "roughness", "ior"]);
+            Material::Glass {
+                reflectance: f.colour("reflectance", Rgb::ONE, REFLECTANCE)?,
+                transmittance: f.colour("transmittance", Rgb::ONE, REFLECTANCE)?,
+                roughness: f.number("roughness", 0.0, ROUGHNESS)?,
+                ior: f.number("ior", 1.5, IOR)?,
+            }
+        }
+        "refraction" => {
+            let f = Fields::new(doc, bsdf, &["transmittance", "roughness", "ior"]);
+            Material::Refraction {
+                transmittance: f.colour("transmittance", Rgb::ONE, REFLECTANCE)?,
+                roughness: f.number("roughness", 0.0, ROUGHNESS)?,
+                ior: f.number("ior", 1.5, IOR)?,
+            }
+        }
+        "microfacet" => {
+            let f = Fields::new(doc, bsdf, &["alpha", "eta", "k"]);
+            Material::Microfacet {
+                alpha: f.number("alpha", 0.5, ALPHA)?,
+                eta: f.colour("eta", COPPER_ETA, CONDUCTOR)?,
+                k: f.colour("k", COPPER_K, CONDUCTOR)?,
+            }
+        }
         other => {
             return Err(doc.err(
                 bsdf,
@@ -108,10 +140,15 @@ fn diffuse_color(doc: &Doc, effect: Node) -> Result<Option<Rgb>, SceneError> {
     let shader = ["phong", "lambert", "blinn"]
         .iter()
         .find_map(|name| child(technique, name));
-    shader
-        .and_then(|s| descend(s, &["diffuse", "color"]))
-        .map(|c| color(doc, c))
-        .transpose()
+    let Some(diffuse) = shader.and_then(|s| child(s, "diffuse")) else {
+        return Ok(None);
+    };
+    if child(diffuse, "color").is_none() {
+        return Ok(None);
+    }
+    Fields::new(doc, diffuse, &["color", "texture"])
+        .colour("color", Rgb::splat(0.5), REFLECTANCE)
+        .map(Some)
 }
 
 #[cfg(test)]

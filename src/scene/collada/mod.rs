@@ -9,6 +9,7 @@
 //! | `xml` | element lookup, `#id` references, element paths for errors |
 //! | `numbers` | number lists, counts, colours (finite values only) |
 //! | `transform` | node matrices and the Z_UP map G: `(x, y, z) -> (-x, z, y)` |
+//! | `fields` | a CGL element's fields: unknown and repeated names, values out of range |
 //! | `camera` | `<camera>`: the course's viewing direction and fields of view |
 //! | `light` | `<light>`: area, point, directional, ambient, spot |
 //! | `material` | `<material>` -> `<effect>`: CGL BSDFs or phong diffuse |
@@ -25,6 +26,7 @@
 
 mod builder;
 mod camera;
+mod fields;
 mod geometry;
 mod light;
 mod material;
@@ -78,5 +80,10 @@ pub fn load_str(text: &str, file: &str) -> Result<Scene, SceneError> {
     let visual_scene = find_visual_scene(&doc, root)?;
     let mut builder = SceneBuilder::new(file);
     walk_visual_scene(&doc, visual_scene, &placement, &mut builder)?;
-    Ok(builder.finish())
+    let mut scene = builder.finish();
+    // The fields' and profiles' warnings first: they often explain the
+    // walk's (a sphere skipped for a misspelt profile).
+    let walk_warnings = std::mem::replace(&mut scene.warnings, doc.take_warnings());
+    scene.warnings.extend(walk_warnings);
+    Ok(scene)
 }

@@ -14,7 +14,7 @@ use crate::math::Rgb;
 
 /// The text of `node` as a list of finite floats.
 pub fn floats(doc: &Doc, node: Node) -> Result<Vec<f32>, SceneError> {
-    let text = node.text().unwrap_or("");
+    let text = &element_text(doc, node);
     let mut out = Vec::new();
     for (i, token) in text.split_ascii_whitespace().enumerate() {
         let value: f32 = token
@@ -31,9 +31,34 @@ pub fn floats(doc: &Doc, node: Node) -> Result<Vec<f32>, SceneError> {
     Ok(out)
 }
 
+/// The text of `node`: all its text, also where a comment or an element
+/// splits it (`<ior>1.<!-- -->45</ior>` is `1.45`, as XML reads it), with
+/// a warning then: the course's reader takes only the text before the
+/// split (`1.`).
+fn element_text<'a>(doc: &Doc, node: Node<'a, '_>) -> std::borrow::Cow<'a, str> {
+    let mut parts = node
+        .children()
+        .filter_map(|c| c.text().filter(|_| c.is_text()));
+    let first = parts.next().unwrap_or("");
+    let rest: String = parts.collect();
+    if rest.is_empty() {
+        return first.into();
+    }
+    let whole = format!("{first}{rest}");
+    doc.warn(
+        node,
+        format!(
+            "a comment or an element splits the text; read as \"{}\" (the course's reader stops at \"{}\")",
+            whole.trim(),
+            first.trim()
+        ),
+    );
+    whole.into()
+}
+
 /// The text of `node` as a list of non-negative integers (indices, counts).
 pub fn indices(doc: &Doc, node: Node) -> Result<Vec<u32>, SceneError> {
-    let text = node.text().unwrap_or("");
+    let text = &element_text(doc, node);
     text.split_ascii_whitespace()
         .enumerate()
         .map(|(i, token)| {

@@ -7,17 +7,20 @@
 //! with an `id` shows it; an element without one that has same-named
 //! siblings shows its 1-based position (`polylist[2]`), as in XPath.
 
+use std::cell::RefCell;
 use std::collections::HashMap;
 
 use roxmltree::{Document, Node};
 
 use super::super::SceneError;
 
-/// A parsed document with its `id` index and the file name for errors.
+/// A parsed document with its `id` index, the file name for errors and
+/// the warnings gathered while reading it.
 pub struct Doc<'a, 'input> {
     /// The file (or name) that errors report.
     pub file: &'a str,
     ids: HashMap<&'a str, Node<'a, 'input>>,
+    warnings: RefCell<Vec<String>>,
 }
 
 impl<'a, 'input> Doc<'a, 'input> {
@@ -30,7 +33,22 @@ impl<'a, 'input> Doc<'a, 'input> {
                 ids.entry(id).or_insert(node);
             }
         }
-        Doc { file, ids }
+        Doc {
+            file,
+            ids,
+            warnings: RefCell::default(),
+        }
+    }
+
+    /// Records a warning located at `node` ([`Doc::take_warnings`]).
+    pub fn warn(&self, node: Node, problem: impl Into<String>) {
+        let note = self.note(node, problem);
+        self.warnings.borrow_mut().push(note);
+    }
+
+    /// The warnings recorded so far, in order; the list is emptied.
+    pub fn take_warnings(&self) -> Vec<String> {
+        self.warnings.take()
     }
 
     /// An error located at `node`.
@@ -113,9 +131,30 @@ pub fn require_attr<'a>(doc: &Doc, node: Node<'a, '_>, name: &str) -> Result<&'a
         .ok_or_else(|| doc.err(node, format!("missing attribute {name}")))
 }
 
-/// The `<technique profile="CGL">` directly under `node`, if any.
-pub fn cgl_technique<'a, 'input>(node: Node<'a, 'input>) -> Option<Node<'a, 'input>> {
-    children(node, "technique").find(|t| t.attribute("profile") == Some("CGL"))
+/// The `<technique profile="CGL">` directly under `node`, if any
+/// ([`is_cgl`]).
+pub fn cgl_technique<'a, 'input>(doc: &Doc, node: Node<'a, 'input>) -> Option<Node<'a, 'input>> {
+    children(node, "technique").find(|t| is_cgl(doc, *t))
+}
+
+/// Whether `technique` is the course's `profile="CGL"`, matched exactly
+/// as the course's reader matches it. A profile that is CGL in another
+/// case or with spaces is not, and gets a warning.
+pub fn is_cgl(doc: &Doc, technique: Node) -> bool {
+    match technique.attribute("profile") {
+        Some("CGL") => true,
+        Some(p) if p.trim().eq_ignore_ascii_case("CGL") => {
+            doc.warn(
+                technique,
+                format!(
+                    "profile=\"{p}\" is not the course's profile=\"CGL\" (matched exactly); \
+                     the technique is ignored, as the course ignores it"
+                ),
+            );
+            false
+        }
+        _ => false,
+    }
 }
 
 /// The first child element of `node`, whatever its name.
