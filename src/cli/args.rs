@@ -1,15 +1,18 @@
 //! The flags students know (the course starter's command line, parsed in
 //! its `src/main.cpp` and listed in the assignment's handout), parsed by
 //! clap; what they ask for in the library's terms is in
-//! [`super::settings`].
+//! [`super::settings`]. A numeric flag takes the argument after it as its
+//! value, a negative number included, and refuses one out of its range
+//! with the rule ([`super::values`]); a flag given twice takes its last
+//! value(s).
 
 use std::path::PathBuf;
 
-use clap::Parser;
+use clap::{ArgAction, Parser};
 
 use crate::depth_of_field::COURSE_FOCAL_DISTANCE;
 
-use super::values::{non_negative, positive};
+use super::values::{non_negative, positive, whole, AdaptiveValues, Number};
 pub use super::values::{
     AccelArg, AssignmentArg, Builtin, CastersArg, LightChoiceArg, MicrofacetSamplingArg,
     RouletteArg, SamplerArg,
@@ -58,18 +61,19 @@ pub struct CourseArgs {
 
     /// Camera rays per pixel [default: 1 with a scene file (the course's),
     /// 64 for the built-in scene].
-    #[arg(short = 's', value_name = "N",
-          value_parser = clap::value_parser!(u32).range(1..=1 << 20))]
+    #[arg(short = 's', value_name = "N", allow_hyphen_values = true,
+          value_parser = Number(whole(1u32, 1 << 20)))]
     pub samples: Option<u32>,
 
     /// Worker threads (default: every core).
-    #[arg(short = 't', value_name = "N", value_parser = clap::value_parser!(u16).range(1..=256))]
+    #[arg(short = 't', value_name = "N", allow_hyphen_values = true,
+          value_parser = Number(whole(1u16, 256)))]
     pub threads: Option<u16>,
 
     /// Output size in pixels [default: 800 600 with a scene file (the
     /// course's), 480 360 for the built-in scene].
-    #[arg(short = 'r', num_args = 2, value_names = ["WIDTH", "HEIGHT"],
-          value_parser = clap::value_parser!(u32).range(1..=MAX_SIDE as i64))]
+    #[arg(short = 'r', num_args = 2, value_names = ["WIDTH", "HEIGHT"], action = ArgAction::Set,
+          allow_hyphen_values = true, value_parser = Number(whole(1, MAX_SIDE)))]
     pub resolution: Option<Vec<u32>>,
 
     /// Output image: .png (8-bit, tone mapped) or .exr (linear radiance);
@@ -79,25 +83,27 @@ pub struct CourseArgs {
     pub output: Option<PathBuf>,
 
     /// Samples per area light (and per light for the ambient sky).
-    #[arg(short = 'l', value_name = "N", default_value_t = 1,
-          value_parser = clap::value_parser!(u32).range(1..=1 << 16))]
+    #[arg(short = 'l', value_name = "N", default_value_t = 1, allow_hyphen_values = true,
+          value_parser = Number(whole(1u32, 1 << 16)))]
     pub light_samples: u32,
 
     /// Maximum ray depth: bounces of light (0 shows only emitters)
     /// [default: 1 with a scene file (the course's: direct light only), 5
     /// for the built-in scene].
-    #[arg(short = 'm', value_name = "N",
-          value_parser = clap::value_parser!(u32).range(0..=10_000))]
+    #[arg(short = 'm', value_name = "N", allow_hyphen_values = true,
+          value_parser = Number(whole(0u32, 10_000)))]
     pub max_depth: Option<u32>,
 
     /// 1: add every bounce up to -m; 0: only the light of the m-th bounce.
-    #[arg(short = 'o', value_name = "0|1", default_value_t = 1,
-          value_parser = clap::value_parser!(u8).range(0..=1))]
+    #[arg(short = 'o', value_name = "0|1", default_value_t = 1, allow_hyphen_values = true,
+          value_parser = Number(whole(0u8, 1)))]
     pub accumulate: u8,
 
     /// Adaptive sampling: test every BATCH samples, stop when the 95 %
-    /// confidence half-width is at most TOL times the pixel's mean.
-    #[arg(short = 'a', num_args = 2, value_names = ["BATCH", "TOL"])]
+    /// confidence half-width is at most TOL times the pixel's mean (BATCH
+    /// from 1 to 1000000, TOL positive).
+    #[arg(short = 'a', num_args = 2, value_names = ["BATCH", "TOL"], action = ArgAction::Set,
+          allow_hyphen_values = true, value_parser = AdaptiveValues::default())]
     pub adaptive: Option<Vec<f32>>,
 
     /// Direct lighting by uniform hemisphere sampling instead of light sampling.
@@ -137,17 +143,19 @@ pub struct CourseArgs {
 
     /// Lens radius (thin-lens depth of field, part 8); 0 is a pinhole.
     #[arg(short = 'b', value_name = "RADIUS", default_value_t = 0.0,
-          value_parser = non_negative)]
+          allow_hyphen_values = true, value_parser = Number(non_negative))]
     pub lens_radius: f32,
 
     /// Focal distance: the distance of the plane in focus (part 8).
     #[arg(short = 'd', value_name = "DISTANCE", default_value_t = COURSE_FOCAL_DISTANCE,
-          value_parser = positive)]
+          allow_hyphen_values = true, value_parser = Number(positive))]
     pub focal_distance: f32,
 
     /// Focus on the surface seen through pixel (X, Y) (row 0 at the top):
     /// sets -d to its distance (printed with --info).
-    #[arg(long, num_args = 2, value_names = ["X", "Y"])]
+    #[arg(long, num_args = 2, value_names = ["X", "Y"], action = ArgAction::Set,
+          allow_hyphen_values = true,
+          value_parser = Number(whole(0, u32::MAX)))]
     pub focus_at: Option<Vec<u32>>,
 
     /// Render with the general integrator, not the one specialised to
@@ -185,7 +193,8 @@ pub struct CourseArgs {
     pub builtin: Builtin,
 
     /// Seed of the render's random numbers.
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, default_value_t = 0, allow_hyphen_values = true,
+          value_parser = Number(whole(0, u64::MAX)))]
     pub seed: u64,
 
     /// Where the random numbers come from: `independent` uniform numbers
@@ -259,149 +268,4 @@ pub struct BvhArgs {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::adaptive::Adaptive;
-    use crate::global::Roulette;
-    use crate::materials::MicrofacetSampling;
-    use crate::sampling::SamplerKind;
-
-    #[test]
-    fn course_flags_parse() {
-        let a = CourseArgs::try_parse_from([
-            "p", "-s", "16", "-t", "2", "-r", "480", "360", "-f", "x.png", "s.dae",
-        ])
-        .unwrap();
-        assert_eq!(
-            (a.samples(), a.threads, a.width(), a.height()),
-            (16, Some(2), 480, 360)
-        );
-        assert_eq!(a.output_path(), PathBuf::from("x.png"));
-        assert_eq!(a.scene, Some(PathBuf::from("s.dae")));
-        let b = CourseArgs::try_parse_from([
-            "p", "-l", "4", "-m", "5", "-o", "0", "-a", "16", "0.1", "-H",
-        ])
-        .unwrap();
-        assert_eq!(
-            (b.light_samples, b.max_depth(), b.accumulate, b.hemisphere),
-            (4, 5, 0, true)
-        );
-        assert_eq!(
-            b.adaptive_settings(),
-            Ok(Some(Adaptive {
-                batch: 16,
-                tolerance: 0.1
-            }))
-        );
-    }
-
-    #[test]
-    fn bad_adaptive_settings_are_refused() {
-        for bad in [
-            ["p", "-a", "0", "0.1"],
-            ["p", "-a", "2.5", "0.1"],
-            ["p", "-a", "8", "0"],
-            ["p", "-a", "8", "nan"],
-        ] {
-            let args = CourseArgs::try_parse_from(bad).unwrap();
-            assert!(args.adaptive_settings().is_err(), "{bad:?}");
-        }
-    }
-
-    #[test]
-    fn defaults_are_the_course_defaults_with_a_scene_file() {
-        let a = CourseArgs::try_parse_from(["p", "s.dae"]).unwrap();
-        assert_eq!(a.defaults(), COURSE_DEFAULTS);
-        assert_eq!(
-            (a.samples(), a.max_depth(), a.width(), a.height()),
-            (1, 1, 800, 600)
-        );
-        assert_eq!(a.render_settings().samples_per_pixel, 1);
-        assert_eq!((a.light_samples, a.accumulate, a.hemisphere), (1, 1, false));
-        assert_eq!(a.adaptive_settings(), Ok(None));
-        assert_eq!(a.output_path(), PathBuf::from("s.png"));
-    }
-
-    #[test]
-    fn without_a_scene_file_the_defaults_are_the_builtin_render() {
-        let a = CourseArgs::try_parse_from(["p"]).unwrap();
-        assert_eq!(a.defaults(), BUILTIN_DEFAULTS);
-        assert_eq!(
-            (a.samples(), a.max_depth(), a.width(), a.height()),
-            (64, 5, 480, 360)
-        );
-        let settings = a.render_settings();
-        assert_eq!(
-            (settings.samples_per_pixel, settings.width, settings.height),
-            (64, 480, 360)
-        );
-        assert_eq!((a.light_samples, a.accumulate, a.hemisphere), (1, 1, false));
-        assert_eq!(a.adaptive_settings(), Ok(None));
-        assert_eq!(a.output_path(), PathBuf::from("cornell-box.png"));
-        // Flags still override: the course's render of the built-in scene.
-        let course =
-            CourseArgs::try_parse_from(["p", "-s", "1", "-m", "1", "-r", "800", "600"]).unwrap();
-        assert_eq!(
-            (
-                course.samples(),
-                course.max_depth(),
-                course.width(),
-                course.height()
-            ),
-            (1, 1, 800, 600)
-        );
-        assert_eq!(a.world_options().bsdf.microfacet, MicrofacetSampling::Auto);
-    }
-
-    #[test]
-    fn microfacet_sampling_names_parse() {
-        for (name, sampling) in [
-            ("cosine", MicrofacetSampling::CosineHemisphere),
-            ("half-vector", MicrofacetSampling::HalfVector),
-            ("visible-normals", MicrofacetSampling::VisibleNormals),
-            ("auto", MicrofacetSampling::Auto),
-        ] {
-            let a = CourseArgs::try_parse_from(["p", "--microfacet-sampling", name]).unwrap();
-            assert_eq!(a.world_options().bsdf.microfacet, sampling, "{name}");
-        }
-        assert!(CourseArgs::try_parse_from(["p", "--microfacet-sampling", "ggx"]).is_err());
-        assert!(CourseArgs::try_parse_from(["p", "--half-vector"]).is_err());
-    }
-
-    #[test]
-    fn sampler_and_roulette_default_to_the_better_ones_and_course_selects_the_courses() {
-        let a = CourseArgs::try_parse_from(["p"]).unwrap();
-        assert_eq!(
-            (a.sampler_kind(), a.roulette()),
-            (SamplerKind::ZSobol, Roulette::Throughput)
-        );
-        assert_eq!(a.render_settings().sampler, SamplerKind::ZSobol);
-        let c = CourseArgs::try_parse_from(["p", "--course"]).unwrap();
-        assert_eq!(
-            (c.sampler_kind(), c.roulette()),
-            (SamplerKind::Independent, Roulette::Fixed)
-        );
-        assert_eq!(c.render_settings().sampler, SamplerKind::Independent);
-        let b =
-            CourseArgs::try_parse_from(["p", "--sampler", "independent", "--roulette", "fixed"])
-                .unwrap();
-        assert_eq!(
-            (b.sampler_kind(), b.roulette()),
-            (SamplerKind::Independent, Roulette::Fixed)
-        );
-        assert!(CourseArgs::try_parse_from(["p", "--course", "--sampler", "zsobol"]).is_err());
-        assert!(CourseArgs::try_parse_from(["p", "--sampler", "sobol"]).is_err());
-    }
-
-    #[test]
-    fn bad_values_are_refused() {
-        for bad in [
-            &["p", "-r", "0", "10"][..],
-            &["p", "-s", "0"],
-            &["p", "-r", "640"],
-            &["p", "-t", "x"],
-        ] {
-            assert!(CourseArgs::try_parse_from(bad).is_err(), "{bad:?}");
-        }
-    }
-}
+mod tests;
