@@ -124,7 +124,8 @@ pub fn estimate_pixel_with(
     mut radiance: impl FnMut(&Ray, &mut PixelSampler) -> Rgb,
 ) -> PixelEstimate {
     let mut stats = LuminanceStats::default();
-    let mut sum = Rgb::ZERO;
+    // Summed in f64: finite samples near f32::MAX cannot add up to infinity.
+    let mut sum = glam::DVec3::ZERO;
     let mut estimate = PixelEstimate::default();
     while estimate.samples < task.max_samples.max(1) {
         sampler.start_pixel_sample(task.pixel, estimate.samples);
@@ -147,14 +148,14 @@ pub fn estimate_pixel_with(
             estimate.rejected += 1;
             continue;
         }
-        sum += l;
+        sum += l.as_dvec3();
         stats.push(l);
         if stop(&stats) {
             break;
         }
     }
     if stats.n > 0 {
-        estimate.radiance = sum / stats.n as f32;
+        estimate.radiance = (sum / stats.n as f64).as_vec3();
     }
     estimate.variance_of_mean = stats.variance_of_mean();
     estimate
@@ -182,4 +183,40 @@ pub fn render_image(
         )
     });
     Rendered::new(settings.width, settings.height, estimates, stats)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sampling::SamplerKind;
+
+    #[test]
+    fn samples_near_the_float_maximum_average_to_a_finite_pixel() {
+        let task = PixelTask {
+            size: (1, 1),
+            pixel: (0, 0),
+            max_samples: 16,
+        };
+        let mut sampler = SamplerKind::Independent.for_render(1, (1, 1), 16);
+        let mut k = 0;
+        let estimate = estimate_pixel_with(
+            task,
+            false,
+            |_| Ray::new(glam::Vec3::ZERO, glam::Vec3::Z),
+            |_| false,
+            &mut sampler,
+            |_, _| {
+                k += 1;
+                // Every fourth sample is not finite: counted, left out.
+                if k % 4 == 0 {
+                    Rgb::splat(f32::NAN)
+                } else {
+                    Rgb::splat(f32::MAX)
+                }
+            },
+        );
+        assert_eq!((estimate.samples, estimate.rejected), (16, 4));
+        // An f32 sum would overflow to infinity at the second sample.
+        assert_eq!(estimate.radiance, Rgb::splat(f32::MAX));
+    }
 }

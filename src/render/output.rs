@@ -162,9 +162,25 @@ pub fn write_image_quantized(
         let display: Vec<Rgb> = film.pixels.iter().map(|&p| tone_map(p)).collect();
         return write_png_quantized(film.width, film.height, &display, path, quantization);
     }
-    let data = film.pixels.iter().flat_map(|p| p.to_array()).collect();
+    let data = film
+        .pixels
+        .iter()
+        .flat_map(|p| p.to_array().map(finite_non_negative))
+        .collect();
     let image = Rgb32FImage::from_raw(film.width, film.height, data).map(DynamicImage::from);
     encode_and_write(image, ImageFormat::OpenExr, path)
+}
+
+/// `v` as an EXR holds it: a render's pixels are finite and non-negative
+/// (non-finite samples are left out, the rest summed in f64, scene values
+/// checked on loading), and this makes sure of it whatever made the film:
+/// NaN and negative values become 0, infinity the largest `f32`.
+fn finite_non_negative(v: f32) -> f32 {
+    if v.is_nan() {
+        0.0
+    } else {
+        v.clamp(0.0, f32::MAX)
+    }
 }
 
 /// Writes display values in `[0, 1]` (row 0 at the top) as an 8-bit PNG,
@@ -273,6 +289,29 @@ mod tests {
             .unwrap_err()
             .to_string()
             .contains(".jpg files"));
+    }
+
+    #[test]
+    fn an_exr_never_holds_a_non_finite_or_negative_value() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("odd.exr");
+        let film = Film {
+            width: 4,
+            height: 1,
+            pixels: vec![
+                Rgb::new(f32::NAN, -1.0, f32::INFINITY),
+                Rgb::new(f32::NEG_INFINITY, 0.5, 2.0),
+                Rgb::ZERO,
+                Rgb::ONE,
+            ],
+        };
+        write_image(&film, &path).unwrap();
+        let back = image::open(&path).unwrap().into_rgb32f();
+        let values: Vec<f32> = back.into_raw();
+        assert_eq!(
+            values,
+            [0.0, 0.0, f32::MAX, 0.0, 0.5, 2.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0]
+        );
     }
 
     #[test]

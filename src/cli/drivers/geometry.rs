@@ -79,7 +79,10 @@ pub fn part2(args: &CourseArgs) -> Result<()> {
     let speedup = measure_speedup(&accel, &p.camera, &settings);
     crate::say!(
         "speed-up over the linear scan: {:.1}x (one thread, {} of {} pixels, {} disagreements)",
-        speedup.ratio, speedup.rays, speedup.pixels, speedup.disagreements
+        speedup.ratio,
+        speedup.rays,
+        speedup.pixels,
+        speedup.disagreements
     )?;
     write_film(&rendered, args)
 }
@@ -163,7 +166,9 @@ pub fn bvh_benchmark(threads: Option<usize>, accel: AccelArg) -> Result<()> {
                 (accel, [binary + collapse, binary, collapse])
             });
             let (leaves, depth, lanes) = accel.wide.leaf_stats();
-            crate::say!("wide BVH: build {total} (binary SAH build {binary}, collapse {collapse})")?;
+            crate::say!(
+                "wide BVH: build {total} (binary SAH build {binary}, collapse {collapse})"
+            )?;
             crate::say!(
                 "triangles {} nodes {} leaves {leaves} depth {depth} packs {} lanes used {:.1} %",
                 accel.primitives.len(),

@@ -158,6 +158,14 @@ fn report_render(rendered: &Rendered) -> Result<()> {
         rendered.samples(),
         rendered.rejected()
     )?;
+    if rendered.rejected() > 0 {
+        crate::warning!(
+            "warning: {} of {} samples ({:.3} %) had a NaN or infinite radiance and were left out of their pixels' means",
+            rendered.rejected(),
+            rendered.samples(),
+            100.0 * rendered.rejected() as f64 / rendered.samples().max(1) as f64
+        );
+    }
     Ok(())
 }
 
