@@ -15,15 +15,24 @@
 //! centred on `((i + 1/2) / w, (j + 1/2) / h)`; the lookup interpolates
 //! bilinearly between the four nearest centres, wrapping around in `u`
 //! and clamping in `v`.
+//!
+//! Texels are radiance: every channel finite, non-negative and at most
+//! [`MAX_RADIANCE`]; a map with another texel is refused, naming the
+//! first such texel `(x, y)` (column from the left, row from the top) and
+//! its value. Negative texels (legal in OpenEXR) are refused too, not
+//! clamped: the map has no channel for warnings, and a negative texel
+//! usually means a map made by subtraction or a wrong colour conversion.
+//! Reading files: the private modules `reading` (what is wrong with a
+//! file, in plain words; OpenEXR windows), `radiance` (the Radiance
+//! format) and `exr_layout` (how long an OpenEXR file should be).
 
 use std::f32::consts::PI;
 use std::fmt;
 use std::path::Path;
 
 use glam::{Vec2, Vec3};
-use image::{ImageFormat, ImageReader};
 
-use crate::math::Rgb;
+use crate::math::{Rgb, MAX_RADIANCE};
 
 /// An environment map that could not be used: the file (or the name of a
 /// map made in code) and what was wrong.
@@ -80,8 +89,8 @@ pub fn uv_to_direction(uv: Vec2) -> Vec3 {
 
 impl EnvironmentMap {
     /// A map of `width x height` texels (rows from the top), checked: 2:1,
-    /// at least 2 x 1, every texel finite and non-negative. `source` names
-    /// the map in errors.
+    /// at least 2 x 1, every channel of every texel finite, non-negative
+    /// and at most [`MAX_RADIANCE`]. `source` names the map in errors.
     pub fn new(
         source: &str,
         width: usize,
@@ -93,9 +102,7 @@ impl EnvironmentMap {
             problem,
         };
         if height == 0 || width != 2 * height {
-            return Err(error(format!(
-                "a latitude-longitude map is twice as wide as high, this one is {width} x {height}"
-            )));
+            return Err(error(shape_problem(width as u64, height as u64)));
         }
         if texels.len() != width * height {
             return Err(error(format!(
@@ -103,15 +110,17 @@ impl EnvironmentMap {
                 texels.len()
             )));
         }
-        if let Some(k) = texels
+        if let Some((k, why)) = texels
             .iter()
-            .position(|t| !t.is_finite() || t.min_element() < 0.0)
+            .enumerate()
+            .find_map(|(k, &t)| texel_problem(t).map(|why| (k, why)))
         {
             return Err(error(format!(
-                "texel ({}, {}) is {} (radiance must be finite and non-negative)",
+                "texel ({}, {}) is {}: {why} (a texel's radiance must be finite, \
+                 between 0 and {MAX_RADIANCE:e})",
                 k % width,
                 k / width,
-                texels[k]
+                texel_text(texels[k])
             )));
         }
         Ok(EnvironmentMap {
@@ -143,32 +152,17 @@ impl EnvironmentMap {
     }
 
     /// Reads an OpenEXR (half or full float, RGB or RGBA; alpha is
-    /// ignored) or Radiance `.hdr` latitude-longitude map.
+    /// ignored; the display window with the data window's texels placed
+    /// in it, black elsewhere) or Radiance
+    /// (`#?RADIANCE` or `#?RGBE`, flat or run-length encoded) map,
+    /// recognised by its first bytes. The error names the file and says
+    /// what is wrong: empty, truncated (at which byte, of how many where
+    /// known), not one of those formats (and what it begins with), too
+    /// large for memory (the size and the memory it needs), not 2:1, or
+    /// its first texel that is not finite, negative or above
+    /// [`MAX_RADIANCE`].
     pub fn load(path: &Path) -> Result<Self, EnvironmentError> {
-        let file = path.display().to_string();
-        let error = |problem: String| EnvironmentError {
-            file: file.clone(),
-            problem,
-        };
-        let reader = ImageReader::open(path)
-            .map_err(|e| error(format!("cannot open: {e}")))?
-            .with_guessed_format()
-            .map_err(|e| error(format!("cannot read: {e}")))?;
-        match reader.format() {
-            Some(ImageFormat::OpenExr | ImageFormat::Hdr) => {}
-            _ => {
-                return Err(error(
-                    "not an OpenEXR (.exr) or Radiance (.hdr) image".into(),
-                ))
-            }
-        }
-        let image = reader
-            .decode()
-            .map_err(|e| error(format!("cannot decode: {e}")))?
-            .into_rgb32f();
-        let (width, height) = (image.width() as usize, image.height() as usize);
-        let texels = image.pixels().map(|p| Rgb::from_array(p.0)).collect();
-        Self::new(&file, width, height, texels)
+        super::reading::load(path)
     }
 
     pub fn width(&self) -> usize {
@@ -235,6 +229,38 @@ impl EnvironmentMap {
             }
         }
         sum / 64.0
+    }
+}
+
+/// Why a map of `width x height` texels is not latitude-longitude.
+pub(super) fn shape_problem(width: u64, height: u64) -> String {
+    format!("a latitude-longitude map is twice as wide as high, this one is {width} x {height}")
+}
+
+/// Texel `t` as `(r, g, b)`, large values in scientific notation.
+fn texel_text(t: Rgb) -> String {
+    let channel = |c: f32| {
+        if c.is_finite() && c.abs() >= 1e6 {
+            format!("{c:e}")
+        } else {
+            format!("{c}")
+        }
+    };
+    format!("({}, {}, {})", channel(t.x), channel(t.y), channel(t.z))
+}
+
+/// What is wrong with texel `t` as radiance, if anything.
+fn texel_problem(t: Rgb) -> Option<&'static str> {
+    if t.is_nan() {
+        Some("not a number (NaN)")
+    } else if !t.is_finite() {
+        Some("infinite")
+    } else if t.min_element() < 0.0 {
+        Some("negative")
+    } else if t.max_element() > MAX_RADIANCE {
+        Some("too bright")
+    } else {
+        None
     }
 }
 

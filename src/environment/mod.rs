@@ -2,7 +2,8 @@
 //! more light at infinity in the light set.
 //!
 //! - [`map`]: the latitude-longitude image (OpenEXR or Radiance `.hdr`),
-//!   the course's direction <-> `(u, v)` mapping, bilinear lookup, checks;
+//!   the course's direction <-> `(u, v)` mapping, bilinear lookup, checks
+//!   (files are read by the private `reading`, `radiance` and `exr_layout`);
 //! - [`light`]: the light: radiance of escaping rays, directions sampled
 //!   uniformly or by importance (a 2D distribution of luminance x
 //!   `sin(theta)`), their density per steradian, its power;
@@ -14,8 +15,11 @@
 //! against those samples by multiple importance sampling, all through the
 //! one integrator loop ([`crate::global`]).
 
+mod exr_layout;
 pub mod light;
 pub mod map;
+mod radiance;
+mod reading;
 pub mod sky;
 
 pub use light::{EnvironmentLight, EnvironmentSampling, EnvironmentWeights};
