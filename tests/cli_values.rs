@@ -263,6 +263,23 @@ fn the_binaries_print_the_refusal() {
             "error: invalid value '-1' for '--seed <SEED>': \
              must be a whole number from 0 to 18446744073709551615\n",
         ),
+        (
+            env!("CARGO_BIN_EXE_check"),
+            &["--student", "x", "-t", "-1"],
+            "error: invalid value '-1' for '--threads <THREADS>': \
+             must be a whole number from 1 to 256\n",
+        ),
+        (
+            env!("CARGO_BIN_EXE_check"),
+            &["--student", "x", "--timeout", "-5"],
+            "error: invalid value '-5' for '--timeout <TIMEOUT>': \
+             must be a whole number from 1 to 86400\n",
+        ),
+        (
+            env!("CARGO_BIN_EXE_check"),
+            &["--student", "x", "--part", "-1"],
+            "error: invalid value '-1' for '--part <PARTS>': must be a whole number from 1 to 8\n",
+        ),
     ] {
         let out = Command::new(binary).args(args).output().expect("binary runs");
         let stderr = String::from_utf8_lossy(&out.stderr);

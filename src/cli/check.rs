@@ -8,6 +8,7 @@ use std::time::Duration;
 use clap::Parser;
 use indicatif::{ProgressBar, ProgressStyle};
 
+use super::values::{whole, Number};
 use crate::check::{
     battery, judge, report, scene_for_checks, table, CheckResult, Outcome, Stage, Student, ALPHA,
 };
@@ -21,7 +22,7 @@ pub struct CheckArgs {
     #[arg(long)]
     pub student: PathBuf,
     /// Only the checks of these parts (repeatable; all by default).
-    #[arg(long = "part", value_parser = clap::value_parser!(u8).range(1..=8))]
+    #[arg(long = "part", allow_hyphen_values = true, value_parser = Number(whole(1u8, 8)))]
     pub parts: Vec<u8>,
     /// The course's scene folder (default: `CS184_SCENES`, else a scene of
     /// this project's, written into `--out`).
@@ -31,10 +32,12 @@ pub struct CheckArgs {
     #[arg(long, default_value = "check-out")]
     pub out: PathBuf,
     /// Threads for your binary (`-t`) and for the reference.
-    #[arg(short = 't', long, default_value_t = 2)]
-    pub threads: usize,
+    #[arg(short = 't', long, default_value_t = 2, allow_hyphen_values = true,
+          value_parser = Number(whole(1u16, 256)))]
+    pub threads: u16,
     /// Seconds one run of your binary may take.
-    #[arg(long, default_value_t = 300)]
+    #[arg(long, default_value_t = 300, allow_hyphen_values = true,
+          value_parser = Number(whole(1u64, 86_400)))]
     pub timeout: u64,
 }
 
@@ -64,7 +67,7 @@ pub fn check(args: &CheckArgs) -> Result<(), Box<dyn Error>> {
         bar.set_message(check.name);
         let file = scene_file.to_string_lossy();
         results.push(match &capabilities {
-            Ok(caps) => judge(check, &student, *caps, &file, &stage, alpha, args.threads),
+            Ok(caps) => judge(check, &student, *caps, &file, &stage, alpha, args.threads.into()),
             Err(e) => CheckResult {
                 check: *check,
                 outcome: Outcome::Error(e.to_string()),
