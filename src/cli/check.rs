@@ -67,7 +67,15 @@ pub fn check(args: &CheckArgs) -> Result<(), Box<dyn Error>> {
         bar.set_message(check.name);
         let file = scene_file.to_string_lossy();
         results.push(match &capabilities {
-            Ok(caps) => judge(check, &student, *caps, &file, &stage, alpha, args.threads.into()),
+            Ok(caps) => judge(
+                check,
+                &student,
+                *caps,
+                &file,
+                &stage,
+                alpha,
+                args.threads.into(),
+            ),
             Err(e) => CheckResult {
                 check: *check,
                 outcome: Outcome::Error(e.to_string()),

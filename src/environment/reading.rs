@@ -25,6 +25,7 @@ use image::{DynamicImage, ImageDecoder, Limits};
 use super::radiance::{self, Problem};
 use super::{EnvironmentError, EnvironmentMap};
 use crate::math::Rgb;
+use crate::render::memory;
 
 /// Bytes a texel takes while an OpenEXR map is read: the decoder's RGB
 /// `f32` buffer, its copy in the image and the map's texels.
@@ -129,14 +130,14 @@ fn check_memory(what: &str, texels: u128, bytes_per_texel: u64) -> Result<(), St
     let too_big = |available: String| {
         format!(
             "{what}; reading it needs {} of memory ({bytes_per_texel} bytes a texel), and {available}",
-            amount(needed)
+            memory::amount(needed)
         )
     };
-    if let Some(available) = available_bytes() {
+    if let Some(available) = memory::available_bytes() {
         if needed > available as u128 {
             return Err(too_big(format!(
                 "{} is available",
-                amount(available as u128)
+                memory::amount(available as u128)
             )));
         }
     }
@@ -144,29 +145,6 @@ fn check_memory(what: &str, texels: u128, bytes_per_texel: u64) -> Result<(), St
         return Err(too_big("that much cannot be allocated".into()));
     }
     Ok(())
-}
-
-/// `MemAvailable` of `/proc/meminfo` in bytes, where it can be read.
-fn available_bytes() -> Option<u64> {
-    let text = std::fs::read_to_string("/proc/meminfo").ok()?;
-    let line = text.lines().find(|l| l.starts_with("MemAvailable:"))?;
-    Some(line.split_whitespace().nth(1)?.parse::<u64>().ok()? * 1024)
-}
-
-/// `bytes` in the largest unit that keeps a number of at least 1: `1.5 GB`.
-fn amount(bytes: u128) -> String {
-    let units = ["bytes", "kB", "MB", "GB", "TB", "PB", "EB", "ZB", "YB"];
-    let mut value = bytes as f64;
-    let mut unit = 0;
-    while value >= 1000.0 && unit + 1 < units.len() {
-        value /= 1000.0;
-        unit += 1;
-    }
-    if unit == 0 {
-        format!("{bytes} bytes")
-    } else {
-        format!("{value:.1} {}", units[unit])
-    }
 }
 
 fn read_radiance(bytes: &[u8]) -> Result<(usize, usize, Vec<Rgb>), String> {

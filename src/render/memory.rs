@@ -40,16 +40,28 @@ pub fn check_image_memory(width: u32, height: u32, available: Option<u64>) -> Re
         Some(available) if needed > available => Err(format!(
             "a {width} x {height} image needs about {} of memory ({BYTES_PER_PIXEL} bytes a pixel) \
              and {} is available; choose a smaller resolution (-r)",
-            gigabytes(needed),
-            gigabytes(available)
+            amount(needed as u128),
+            amount(available as u128)
         )),
         _ => Ok(()),
     }
 }
 
-/// `bytes` in gigabytes with one decimal: `25.8 GB`.
-fn gigabytes(bytes: u64) -> String {
-    format!("{:.1} GB", bytes as f64 / 1e9)
+/// `bytes` in the largest unit that keeps a number of at least 1, with
+/// one decimal: `25.8 GB`, `512 bytes`.
+pub fn amount(bytes: u128) -> String {
+    let units = ["bytes", "kB", "MB", "GB", "TB", "PB", "EB", "ZB", "YB"];
+    let mut value = bytes as f64;
+    let mut unit = 0;
+    while value >= 1000.0 && unit + 1 < units.len() {
+        value /= 1000.0;
+        unit += 1;
+    }
+    if unit == 0 {
+        format!("{bytes} bytes")
+    } else {
+        format!("{value:.1} {}", units[unit])
+    }
 }
 
 #[cfg(test)]
