@@ -37,8 +37,6 @@ pub fn material(doc: &Doc, material: Node) -> Result<Material, SceneError> {
     for technique in effect.descendants().filter(|n| n.has_tag_name("technique")) {
         if is_cgl(doc, technique) {
             cgl = cgl.or(Some(technique));
-        } else if technique.attribute("profile").is_none() {
-            warn_if_names_a_bsdf(doc, technique);
         }
     }
     match cgl {
@@ -46,22 +44,6 @@ pub fn material(doc: &Doc, material: Node) -> Result<Material, SceneError> {
         None => Ok(Material::Diffuse {
             albedo: diffuse_color(doc, effect)?.unwrap_or(Rgb::splat(0.5)),
         }),
-    }
-}
-
-/// The BSDFs a CGL technique can name.
-const CGL_BSDFS: [&str; 5] = ["emission", "mirror", "glass", "refraction", "microfacet"];
-
-/// Warns about a `<technique>` without a profile whose first element is
-/// a CGL BSDF: meant as CGL, but the course's reader ignores it, and so
-/// the material is diffuse.
-fn warn_if_names_a_bsdf(doc: &Doc, technique: Node) {
-    if first_element(technique).is_some_and(|b| CGL_BSDFS.contains(&b.tag_name().name())) {
-        doc.warn(
-            technique,
-            "a technique without profile=\"CGL\" names a CGL material; \
-             it is ignored, as the course ignores it",
-        );
     }
 }
 

@@ -139,22 +139,25 @@ pub fn cgl_technique<'a, 'input>(doc: &Doc, node: Node<'a, 'input>) -> Option<No
 
 /// Whether `technique` is the course's `profile="CGL"`, matched exactly
 /// as the course's reader matches it. A profile that is CGL in another
-/// case or with spaces is not, and gets a warning.
+/// case or with spaces is not, and gets a warning; so does a technique
+/// under `<extra>` without a profile (COLLADA requires one there).
 pub fn is_cgl(doc: &Doc, technique: Node) -> bool {
-    match technique.attribute("profile") {
-        Some("CGL") => true,
-        Some(p) if p.trim().eq_ignore_ascii_case("CGL") => {
-            doc.warn(
-                technique,
-                format!(
-                    "profile=\"{p}\" is not the course's profile=\"CGL\" (matched exactly); \
-                     the technique is ignored, as the course ignores it"
-                ),
-            );
-            false
+    let said = match technique.attribute("profile") {
+        Some("CGL") => return true,
+        Some(p) if p.trim().eq_ignore_ascii_case("CGL") => format!("profile=\"{p}\""),
+        None if technique.parent().is_some_and(|p| p.has_tag_name("extra")) => {
+            "no profile".to_string()
         }
-        _ => false,
-    }
+        _ => return false,
+    };
+    doc.warn(
+        technique,
+        format!(
+            "a technique with {said} is not the course's profile=\"CGL\" (matched exactly); \
+             it is ignored, as the course ignores it"
+        ),
+    );
+    false
 }
 
 /// The first child element of `node`, whatever its name.
