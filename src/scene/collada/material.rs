@@ -125,10 +125,11 @@ fn diffuse_color(doc: &Doc, effect: Node) -> Result<Option<Rgb>, SceneError> {
     let Some(diffuse) = shader.and_then(|s| child(s, "diffuse")) else {
         return Ok(None);
     };
+    let fields = Fields::new(doc, diffuse, &["color", "texture"]);
     if child(diffuse, "color").is_none() {
         return Ok(None);
     }
-    Fields::new(doc, diffuse, &["color", "texture"])
+    fields
         .colour("color", Rgb::splat(0.5), REFLECTANCE)
         .map(Some)
 }
