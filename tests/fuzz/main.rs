@@ -31,7 +31,7 @@ use rand_pcg::Pcg64;
 use run::{run, small_render, Outcome, Workspace};
 
 /// Inputs of each kind in a test run, unless `FUZZ_CASES` says.
-const CASES: usize = 40;
+const CASES: usize = 200;
 
 fn cases() -> usize {
     std::env::var("FUZZ_CASES")
