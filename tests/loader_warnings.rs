@@ -68,6 +68,20 @@ fn misspelt_fields_are_named_with_the_field_meant() {
             &[&format!("<{typo}>"), &format!("did you mean <{meant}>?")],
         );
     }
+    // A required field misspelt is an error that names it.
+    let text = corrupt(
+        "<point><color>2 2 2</color>",
+        "<point><colour>2 2 2</colour>",
+    );
+    let e = collada::load_str(&text, FILE).unwrap_err();
+    assert!(
+        e.problem
+            .contains("missing child element <color> (<colour> is given"),
+        "{e}"
+    );
+    let text = corrupt("<radius>0.5</radius>", "<raduis>0.5</raduis>");
+    let e = collada::load_str(&text, FILE).unwrap_err();
+    assert!(e.problem.contains("<raduis> is given"), "{e}");
     // The light's fields too.
     let text = corrupt(
         "<point><color>2 2 2</color>",
@@ -109,6 +123,7 @@ fn a_misspelt_profile_is_warned_about_and_ignored_as_the_course_does() {
       <sphere>"#,
     );
     let w = warnings(&text);
+    assert!(!w.is_empty(), "no warning");
     assert!(
         w[0].contains("geometry[id=ball]") && w[0].contains("profile=\"cgl\""),
         "{w:?}"
@@ -136,7 +151,12 @@ fn a_field_given_twice_names_both_values() {
 #[test]
 fn a_number_split_by_a_comment_is_read_whole_with_a_warning() {
     let text = with_bsdf("<glass><ior>1.<!-- -->45</ior></glass>");
-    one_warning(&text, &["glass/ior", "\"1.45\"", "\"1.\""]);
+    one_warning(&text, &["glass/ior", "\"1.45\"", "takes \"1.\""]);
+    let text = with_bsdf("<glass><ior><!-- before -->1.45</ior></glass>");
+    one_warning(&text, &["glass/ior", "\"1.45\"", "takes nothing"]);
+    // A comment after the number changes nothing the course reads.
+    let text = with_bsdf("<glass><ior>1.45<!-- after -->\n</ior></glass>");
+    assert!(warnings(&text).is_empty());
     let scene = load(&text);
     assert!(scene
         .materials

@@ -71,16 +71,7 @@ fn a_full_device_on_stdout_is_a_clear_error() {
 
 #[test]
 fn an_image_too_big_for_memory_is_refused_before_the_render() {
-    let available = std::fs::read_to_string("/proc/meminfo")
-        .ok()
-        .and_then(|t| {
-            let line = t
-                .lines()
-                .find(|l| l.starts_with("MemAvailable:"))?
-                .to_owned();
-            line.split_whitespace().nth(1)?.parse::<u64>().ok()
-        })
-        .map(|kib| kib * 1024);
+    let available = pathtracer::render::memory::available_bytes();
     let biggest = pathtracer::render::memory::image_bytes(16384, 16384);
     if available.is_none_or(|a| a >= biggest) {
         eprintln!("skipped: this machine has room for a 16384 x 16384 render");

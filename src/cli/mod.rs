@@ -29,7 +29,7 @@ pub fn exit_with(result: Result<(), Box<dyn std::error::Error>>) -> ExitCode {
             {
                 return ExitCode::from(CLOSED_PIPE_STATUS);
             }
-            crate::warning!("error: {e}");
+            crate::say_err!("error: {e}");
             ExitCode::FAILURE
         }
     }

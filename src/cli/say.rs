@@ -10,7 +10,7 @@
 //! ([`crate::render::write_image`]): a run stopped by a closed pipe before
 //! it writes the image writes none.
 //!
-//! Warnings go to standard error through [`warning!`](crate::warning): if that cannot be
+//! Warnings go to standard error through [`say_err!`](crate::say_err): if that cannot be
 //! written there is nowhere left to say so, and the run goes on.
 
 use std::fmt;
@@ -63,7 +63,7 @@ macro_rules! say {
 
 /// `eprintln!` that never panics.
 #[macro_export]
-macro_rules! warning {
+macro_rules! say_err {
     ($($arg:tt)*) => {
         $crate::cli::say::warn(format_args!($($arg)*))
     };

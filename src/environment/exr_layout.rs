@@ -111,12 +111,14 @@ fn parse(bytes: &[u8]) -> Option<(Option<Layout>, Vec<Window>)> {
                 };
                 h.div_ceil(lines)
             }
-            (None, true, Some((tw, th, 0))) if tw > 0 && th > 0 => w.div_ceil(tw) * h.div_ceil(th),
+            (None, true, Some((tw, th, 0))) if tw > 0 && th > 0 => {
+                w.div_ceil(tw).checked_mul(h.div_ceil(th))?
+            }
             _ => return None,
         };
         Some(Layout {
             data_window: (w, h),
-            table_end: at as u64 + 8 * chunks,
+            table_end: (at as u64).checked_add(chunks.checked_mul(8)?)?,
             chunks,
             chunk_header: if tiled { 20 } else { 8 },
         })

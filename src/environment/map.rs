@@ -32,6 +32,7 @@ use std::path::Path;
 
 use glam::{Vec2, Vec3};
 
+use crate::math::float::readable;
 use crate::math::{Rgb, MAX_RADIANCE};
 
 /// An environment map that could not be used: the file (or the name of a
@@ -239,14 +240,7 @@ pub(super) fn shape_problem(width: u64, height: u64) -> String {
 
 /// Texel `t` as `(r, g, b)`, large values in scientific notation.
 fn texel_text(t: Rgb) -> String {
-    let channel = |c: f32| {
-        if c.is_finite() && c.abs() >= 1e6 {
-            format!("{c:e}")
-        } else {
-            format!("{c}")
-        }
-    };
-    format!("({}, {}, {})", channel(t.x), channel(t.y), channel(t.z))
+    format!("({}, {}, {})", readable(t.x), readable(t.y), readable(t.z))
 }
 
 /// What is wrong with texel `t` as radiance, if anything.

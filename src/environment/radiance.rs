@@ -129,12 +129,10 @@ pub fn read_header(bytes: &[u8]) -> Result<Header, String> {
                 }
             }
         } else if let Some(value) = text.strip_prefix("COLORCORR=") {
-            let factors: Vec<f32> = value
-                .split_whitespace()
-                .filter_map(|f| f.parse().ok())
-                .collect();
-            match factors[..] {
-                [r, g, b] if [r, g, b].iter().all(|f| f.is_finite() && *f > 0.0) => {
+            let factors: Option<Vec<f32>> =
+                value.split_whitespace().map(|f| f.parse().ok()).collect();
+            match factors.as_deref().unwrap_or_default() {
+                &[r, g, b] if [r, g, b].iter().all(|f| f.is_finite() && *f > 0.0) => {
                     scale *= Rgb::new(r, g, b)
                 }
                 _ => {
@@ -144,6 +142,11 @@ pub fn read_header(bytes: &[u8]) -> Result<Header, String> {
                 }
             }
         }
+    }
+    if !scale.is_finite() {
+        return Err(
+            "its header's EXPOSURE and COLORCORR factors multiply past the largest float".into(),
+        );
     }
     let Some(line) = next_line(&mut at) else {
         return Err(

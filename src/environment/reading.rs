@@ -116,7 +116,7 @@ fn describe_start(bytes: &[u8]) -> String {
 /// Refuses a map that is not 2:1 or whose texels do not fit in memory,
 /// before anything is allocated for it.
 fn check_size(width: u64, height: u64, bytes_per_texel: u64) -> Result<(), String> {
-    if width != 2 * height {
+    if height.checked_mul(2) != Some(width) {
         return Err(super::map::shape_problem(width, height));
     }
     let what = format!("it is {width} x {height} texels");
@@ -127,24 +127,22 @@ fn check_size(width: u64, height: u64, bytes_per_texel: u64) -> Result<(), Strin
 /// fit in the memory available.
 fn check_memory(what: &str, texels: u128, bytes_per_texel: u64) -> Result<(), String> {
     let needed = texels * bytes_per_texel as u128;
-    let too_big = |available: String| {
-        format!(
-            "{what}; reading it needs {} of memory ({bytes_per_texel} bytes a texel), and {available}",
-            memory::amount(needed)
-        )
-    };
-    if let Some(available) = memory::available_bytes() {
-        if needed > available as u128 {
-            return Err(too_big(format!(
-                "{} is available",
-                memory::amount(available as u128)
-            )));
-        }
+    let words = memory::shortfall(needed, memory::available_bytes()).or_else(|| {
+        let cannot = needed > isize::MAX as u128
+            || Vec::<u8>::new().try_reserve_exact(needed as usize).is_err();
+        cannot.then(|| {
+            format!(
+                "needs {} of memory, which cannot be allocated",
+                memory::amount(needed)
+            )
+        })
+    });
+    match words {
+        Some(words) => Err(format!(
+            "{what}; reading it {words} ({bytes_per_texel} bytes a texel)"
+        )),
+        None => Ok(()),
     }
-    if needed > isize::MAX as u128 || Vec::<u8>::new().try_reserve_exact(needed as usize).is_err() {
-        return Err(too_big("that much cannot be allocated".into()));
-    }
-    Ok(())
 }
 
 fn read_radiance(bytes: &[u8]) -> Result<(usize, usize, Vec<Rgb>), String> {

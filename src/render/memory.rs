@@ -35,16 +35,24 @@ fn parse_mem_available(meminfo: &str) -> Option<u64> {
 /// Refuses a `width` x `height` render that needs more memory than
 /// `available` (bytes; `None`: unknown, nothing refused), saying both.
 pub fn check_image_memory(width: u32, height: u32, available: Option<u64>) -> Result<(), String> {
-    let needed = image_bytes(width, height);
-    match available {
-        Some(available) if needed > available => Err(format!(
-            "a {width} x {height} image needs about {} of memory ({BYTES_PER_PIXEL} bytes a pixel) \
-             and {} is available; choose a smaller resolution (-r)",
-            amount(needed as u128),
-            amount(available as u128)
-        )),
-        _ => Ok(()),
-    }
+    shortfall(image_bytes(width, height) as u128, available).map_or(Ok(()), |words| {
+        Err(format!(
+            "a {width} x {height} image {words} ({BYTES_PER_PIXEL} bytes a pixel); \
+             choose a smaller resolution (-r)"
+        ))
+    })
+}
+
+/// When `needed` bytes do not fit in `available` (`None`: unknown, so
+/// they are taken to fit), both in words: "needs about 25.8 GB of memory
+/// and 22.0 GB is available".
+pub fn shortfall(needed: u128, available: Option<u64>) -> Option<String> {
+    let available = available.filter(|&a| needed > a as u128)?;
+    Some(format!(
+        "needs about {} of memory and {} is available",
+        amount(needed),
+        amount(available as u128)
+    ))
 }
 
 /// `bytes` in the largest unit that keeps a number of at least 1, with

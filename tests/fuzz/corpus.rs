@@ -12,15 +12,6 @@ pub struct SceneCase {
     pub nonsense: bool,
 }
 
-/// The materials box in the course's dialect: a mirror, a glass and a
-/// copper sphere, an area light.
-fn materials_box() -> String {
-    let mut out = Vec::new();
-    let scene = pathtracer::scene::builtin::materials_box();
-    pathtracer::scene::export_scene::write_scene_dae(&scene, &mut out).unwrap();
-    String::from_utf8(out).unwrap()
-}
-
 /// `text` with the first `from` (which must be there) replaced by `to`.
 fn edit(text: &str, from: &str, to: &str) -> String {
     assert!(text.contains(from), "{from:?} is in the base scene");
@@ -36,7 +27,8 @@ fn set(text: &str, name: &str, value: &str) -> String {
 }
 
 pub fn scene_cases() -> Vec<SceneCase> {
-    let base = materials_box();
+    // The materials box: a mirror, a glass and a copper sphere, an area light.
+    let base = super::exported(&pathtracer::scene::builtin::materials_box());
     let case = |what: &str, text: String| SceneCase {
         what: what.to_string(),
         text,

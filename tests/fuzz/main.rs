@@ -109,19 +109,21 @@ impl Tally {
     }
 }
 
+/// `scene` in the course's dialect.
+fn exported(scene: &pathtracer::scene::Scene) -> String {
+    let mut out = Vec::new();
+    pathtracer::scene::export_scene::write_scene_dae(scene, &mut out).unwrap();
+    String::from_utf8(out).unwrap()
+}
+
 /// The scenes mutations start from: the tests' minimal scene, the
 /// materials box and the Cornell box exported to the course's dialect,
 /// and the course's `CBspheres.dae` where it is found.
 fn base_scenes() -> Vec<String> {
-    let export = |scene: pathtracer::scene::Scene| {
-        let mut out = Vec::new();
-        pathtracer::scene::export_scene::write_scene_dae(&scene, &mut out).unwrap();
-        String::from_utf8(out).unwrap()
-    };
     let mut bases = vec![
         common::MINIMAL.to_string(),
-        export(pathtracer::scene::builtin::materials_box()),
-        export(pathtracer::scene::builtin::cornell_box()),
+        exported(&pathtracer::scene::builtin::materials_box()),
+        exported(&pathtracer::scene::builtin::cornell_box()),
     ];
     if let Some(path) = pathtracer::scene::course_files::find("CBspheres.dae") {
         bases.push(std::fs::read_to_string(path).unwrap());

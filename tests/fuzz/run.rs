@@ -8,6 +8,8 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
+use pathtracer::cli::drivers::OUT_OF_RANGE_PIXELS;
+
 const PATHTRACER: &str = env!("CARGO_BIN_EXE_pathtracer");
 
 /// The longest a tiny render may take before it counts as a hang.
@@ -94,6 +96,7 @@ pub fn run(args: &[String], image: &Path, warning_about: &str) -> Outcome {
         Some(1 | 2) if stderr.starts_with("error: ") || stderr.contains("\nerror: ") => {
             Outcome::Refused(stderr)
         }
+        Some(0) if stderr.contains(OUT_OF_RANGE_PIXELS) => Outcome::BadPixels(stderr),
         Some(0) => match check_image(image) {
             Ok(()) => Outcome::Rendered {
                 warned: stderr

@@ -98,7 +98,7 @@ fn run(args: &CourseArgs, part: CoursePart, exact: CourseExact) -> Result<()> {
         crate::say!("{course_line}")?;
         return Ok(());
     }
-    crate::warning!("{course_line}");
+    crate::say_err!("{course_line}");
     let accel = build_wide_bvh(&scene.source, primitives)?;
     let view = CourseView {
         scene: &scene,

@@ -108,7 +108,7 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
         if args.info {
             crate::say!("{line}")?;
         } else {
-            crate::warning!("{line}");
+            crate::say_err!("{line}");
         }
     }
     let part = part(&scene)?;
@@ -134,7 +134,7 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
         World::with_options(&scene, &accel, args.world_options()).with_environment(environment);
     let plan = Plan::new(&scene, &world.lights, &part.tracer, &camera.lens);
     for warning in &plan.warnings {
-        crate::warning!("warning: {}: {warning}", scene.source);
+        crate::say_err!("warning: {}: {warning}", scene.source);
     }
     let tracer = if args.no_plan {
         part.tracer

@@ -39,7 +39,7 @@ pub fn prepare(args: &CourseArgs) -> Result<Prepared> {
     let scene = args.load_scene()?;
     // The loader's warnings name the file and the element themselves.
     for warning in &scene.warnings {
-        crate::warning!("warning: {warning}");
+        crate::say_err!("warning: {warning}");
     }
     let primitives = Primitives::from_scene(&scene);
     let pinhole = Camera::course_placement(
@@ -144,7 +144,11 @@ fn describe_or(prepared: Prepared, args: &CourseArgs) -> Result<Option<Prepared>
     }
 }
 
-/// Prints render time, ray rate, rejected samples and non-finite pixels.
+/// What the warning about pixels that no image should hold says of them.
+pub const OUT_OF_RANGE_PIXELS: &str = "pixels hold a NaN, infinite or negative value";
+
+/// Prints render time, ray rate and rejected samples; warns about
+/// rejected samples and about pixels no image should hold.
 fn report_render(rendered: &Rendered) -> Result<()> {
     let stats = &rendered.stats;
     crate::say!(
@@ -158,8 +162,19 @@ fn report_render(rendered: &Rendered) -> Result<()> {
         rendered.samples(),
         rendered.rejected()
     )?;
+    let out_of_range = rendered
+        .film
+        .pixels
+        .iter()
+        .filter(|p| !p.is_finite() || p.min_element() < 0.0)
+        .count();
+    if out_of_range > 0 {
+        crate::say_err!(
+            "warning: {out_of_range} {OUT_OF_RANGE_PIXELS}; the image holds 0 for NaN and negative values, the largest float for infinity"
+        );
+    }
     if rendered.rejected() > 0 {
-        crate::warning!(
+        crate::say_err!(
             "warning: {} of {} samples ({:.3} %) had a NaN or infinite radiance and were left out of their pixels' means",
             rendered.rejected(),
             rendered.samples(),

@@ -20,6 +20,7 @@ use roxmltree::Node;
 use super::super::SceneError;
 use super::numbers::{color, single_float};
 use super::xml::{children, Doc};
+use crate::math::float::readable;
 use crate::math::{Rgb, MAX_RADIANCE};
 
 /// The range a field's values must lie in.
@@ -158,6 +159,24 @@ impl<'d, 'a, 'input> Fields<'d, 'a, 'input> {
         Ok(value)
     }
 
+    /// The field `name`, which must be given; when it is missing, the error
+    /// names a field given that is at most two letters off (`<colour>`).
+    pub fn required(&self, name: &str) -> Result<Node<'a, 'input>, SceneError> {
+        self.node(name).ok_or_else(|| {
+            let near = self
+                .element
+                .children()
+                .filter(Node::is_element)
+                .map(|c| c.tag_name().name())
+                .find(|given| edit_distance(given, name) <= 2);
+            let hint = near.map_or(String::new(), |g| format!(" (<{g}> is given: misspelt?)"));
+            self.doc.err(
+                self.element,
+                format!("missing child element <{name}>{hint}"),
+            )
+        })
+    }
+
     /// The first child element named `name`.
     fn node(&self, name: &str) -> Option<Node<'a, 'input>> {
         self.element
@@ -181,8 +200,8 @@ impl<'d, 'a, 'input> Fields<'d, 'a, 'input> {
             return Err(self.doc.err(
                 node,
                 format!(
-                    "<{name}> must be {low} and at most {:e}; found {}",
-                    rule.max,
+                    "<{name}> must be {low} and at most {}; found {}",
+                    readable(rule.max),
                     readable(value)
                 ),
             ));
@@ -194,15 +213,6 @@ impl<'d, 'a, 'input> Fields<'d, 'a, 'input> {
             }
         }
         Ok(())
-    }
-}
-
-/// `value` as a message shows it: `1e30` rather than thirty-one digits.
-fn readable(value: f32) -> String {
-    if value != 0.0 && !(1e-4..1e6).contains(&value.abs()) {
-        format!("{value:e}")
-    } else {
-        format!("{value}")
     }
 }
 
@@ -289,7 +299,7 @@ mod tests {
         let (e, _) = read("<glass><ior>1e30</ior></glass>", |f| {
             f.number("ior", 1.5, IOR).unwrap_err()
         });
-        assert!(e.problem.contains("at most 1e2"), "{e}");
+        assert!(e.problem.contains("at most 100;"), "{e}");
         let (e, _) = read("<glass><ior>0</ior></glass>", |f| {
             f.number("ior", 1.5, IOR).unwrap_err()
         });

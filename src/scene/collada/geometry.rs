@@ -16,7 +16,7 @@ use super::super::SceneError;
 use super::fields::Fields;
 use super::mesh::{mesh, LocalMesh};
 use super::numbers::single_float;
-use super::xml::{cgl_technique, child, require_child, Doc};
+use super::xml::{cgl_technique, child, Doc};
 
 /// What a `<geometry>` holds, in its own (file) space.
 #[derive(Clone, Debug, PartialEq)]
@@ -42,8 +42,7 @@ pub fn shape(
         .and_then(|e| cgl_technique(doc, e))
         .and_then(|t| child(t, "sphere"));
     if let Some(sphere) = sphere {
-        Fields::new(doc, sphere, &["radius"]);
-        let radius_node = require_child(doc, sphere, "radius")?;
+        let radius_node = Fields::new(doc, sphere, &["radius"]).required("radius")?;
         let radius = single_float(doc, radius_node)?;
         if radius < 0.0 {
             return Err(doc.err(radius_node, format!("negative radius {radius}")));

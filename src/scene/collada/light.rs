@@ -30,7 +30,7 @@ use roxmltree::Node;
 use super::super::{Light, SceneError};
 use super::fields::{Fields, RADIANCE};
 use super::transform::Placement;
-use super::xml::{cgl_technique, child, first_element, require_child, Doc};
+use super::xml::{cgl_technique, child, first_element, Doc};
 
 /// The light `light` placed by `place`; `None` (with a warning) for a kind
 /// the course does not know.
@@ -52,8 +52,9 @@ pub fn light(
         warnings.push(doc.note(kind, "unknown light kind; the light is skipped"));
         return Ok(None);
     }
-    require_child(doc, kind, "color")?;
-    let rgb = Fields::new(doc, kind, light_fields(name)).colour("color", Vec3::ZERO, RADIANCE)?;
+    let fields = Fields::new(doc, kind, light_fields(name));
+    fields.required("color")?;
+    let rgb = fields.colour("color", Vec3::ZERO, RADIANCE)?;
     let center = place.point(Vec3::ZERO);
     let front = place.point(Vec3::NEG_Z);
     // The course's direction for directional and spot lights keeps the
@@ -98,23 +99,18 @@ pub fn light(
 /// The fields a light of kind `name` has (COLLADA 1.4.1, section 5): the
 /// colour, and the attenuation and falloff the course reads and ignores.
 fn light_fields(name: &str) -> &'static [&'static str] {
-    const ATTENUATION: [&str; 4] = [
+    const SPOT: [&str; 6] = [
         "color",
         "constant_attenuation",
         "linear_attenuation",
         "quadratic_attenuation",
+        "falloff_angle",
+        "falloff_exponent",
     ];
     match name {
-        "point" => &ATTENUATION,
-        "spot" => &[
-            "color",
-            "constant_attenuation",
-            "linear_attenuation",
-            "quadratic_attenuation",
-            "falloff_angle",
-            "falloff_exponent",
-        ],
-        _ => &["color"],
+        "point" => &SPOT[..4],
+        "spot" => &SPOT,
+        _ => &SPOT[..1],
     }
 }
 

@@ -33,24 +33,31 @@ pub fn floats(doc: &Doc, node: Node) -> Result<Vec<f32>, SceneError> {
 
 /// The text of `node`: all its text, also where a comment or an element
 /// splits it (`<ior>1.<!-- -->45</ior>` is `1.45`, as XML reads it), with
-/// a warning then: the course's reader takes only the text before the
-/// split (`1.`).
+/// a warning when text follows the split: the course's reader takes only
+/// the text before the first comment or element (`1.`).
 fn element_text<'a>(doc: &Doc, node: Node<'a, '_>) -> std::borrow::Cow<'a, str> {
-    let mut parts = node
-        .children()
-        .filter_map(|c| c.text().filter(|_| c.is_text()));
-    let first = parts.next().unwrap_or("");
-    let rest: String = parts.collect();
-    if rest.is_empty() {
-        return first.into();
+    let mut children = node.children();
+    let before: String = children
+        .by_ref()
+        .take_while(Node::is_text)
+        .filter_map(|c| c.text())
+        .collect();
+    let after: String = children
+        .filter_map(|c| c.text().filter(|_| c.is_text()))
+        .collect();
+    if after.trim().is_empty() {
+        return before.into();
     }
-    let whole = format!("{first}{rest}");
+    let whole = format!("{before}{after}");
+    let course = match before.trim() {
+        "" => "nothing".to_string(),
+        text => format!("\"{text}\""),
+    };
     doc.warn(
         node,
         format!(
-            "a comment or an element splits the text; read as \"{}\" (the course's reader stops at \"{}\")",
-            whole.trim(),
-            first.trim()
+            "a comment or an element splits the text; read as \"{}\" (the course's reader takes {course}, the text before it)",
+            whole.trim()
         ),
     );
     whole.into()

@@ -40,10 +40,14 @@ impl<'a, 'input> Doc<'a, 'input> {
         }
     }
 
-    /// Records a warning located at `node` ([`Doc::take_warnings`]).
+    /// Records a warning located at `node` ([`Doc::take_warnings`]); the
+    /// same warning twice (an element read once per instance) is kept once.
     pub fn warn(&self, node: Node, problem: impl Into<String>) {
         let note = self.note(node, problem);
-        self.warnings.borrow_mut().push(note);
+        let mut warnings = self.warnings.borrow_mut();
+        if !warnings.contains(&note) {
+            warnings.push(note);
+        }
     }
 
     /// The warnings recorded so far, in order; the list is emptied.
