@@ -54,6 +54,16 @@ pub fn next_float_towards(v: f32, direction: f32) -> f32 {
     }
 }
 
+/// `value` as a message shows it: `1e30` and `2e-7` rather than dozens of
+/// digits, `0.25` and `1500` as they are, `NaN` and `inf` by name.
+pub fn readable(value: f32) -> String {
+    if value.is_finite() && value != 0.0 && !(1e-4..1e6).contains(&value.abs()) {
+        format!("{value:e}")
+    } else {
+        format!("{value}")
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -84,15 +94,5 @@ mod tests {
                 if v == 0.0 { 0.0 } else { v }
             );
         }
-    }
-}
-
-/// `value` as a message shows it: `1e30` and `2e-7` rather than dozens of
-/// digits, `0.25` and `1500` as they are, `NaN` and `inf` by name.
-pub fn readable(value: f32) -> String {
-    if value.is_finite() && value != 0.0 && !(1e-4..1e6).contains(&value.abs()) {
-        format!("{value:e}")
-    } else {
-        format!("{value}")
     }
 }
