@@ -153,6 +153,16 @@ fn run_map(space: &Workspace, bytes: &[u8], extension: &str) -> Outcome {
     )
 }
 
+/// Runs the built-in scene with the fuzzed `flags` and the small render's
+/// other flags; no warning is about the input.
+fn run_flags(space: &Workspace, flags: &[String]) -> Outcome {
+    let image = space.path("out.exr");
+    let mut args = flags::small_flags_except(flags);
+    args.extend(flags.iter().cloned());
+    args.extend(["-f".to_string(), image.display().to_string()]);
+    run(&args, &image, "<none>")
+}
+
 #[test]
 fn the_corpus_of_known_cases() {
     let space = Workspace::new();
@@ -166,11 +176,7 @@ fn the_corpus_of_known_cases() {
         tally.add(&case.what, outcome, case.nonsense, case.legal);
     }
     for flags in corpus::flag_cases(&space) {
-        let image = space.path("out.exr");
-        let mut args = flags::small_flags_except(&flags);
-        args.extend(flags.iter().cloned());
-        args.extend(["-f".to_string(), image.display().to_string()]);
-        let outcome = run(&args, &image, "<none>");
+        let outcome = run_flags(&space, &flags);
         tally.add(&flags.join(" "), outcome, true, false);
     }
     tally.check("corpus");
@@ -215,11 +221,7 @@ fn mutated_flags() {
     let mut tally = Tally::default();
     for _ in 0..cases() {
         let mutant = flags::mutate(&mut rng);
-        let image = space.path("out.exr");
-        let mut args = flags::small_flags_except(&mutant.flags);
-        args.extend(mutant.flags.iter().cloned());
-        args.extend(["-f".to_string(), image.display().to_string()]);
-        let outcome = run(&args, &image, "<none>");
+        let outcome = run_flags(&space, &mutant.flags);
         if let Outcome::Refused(message) = &outcome {
             assert!(
                 flags::quotes_as_typed(message, &mutant.flags),
