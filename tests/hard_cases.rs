@@ -193,11 +193,20 @@ fn huge_and_tiny_coordinates() {
             (Vec3::new(0.0, 0.0, -2.0) * s, 0.5 * s),
             (Vec3::splat(3.0 * s), s),
         ];
-        trace_hard(&[tri], &spheres, Vec3::ZERO, s);
+        let near = trace_hard(&[tri], &spheres, Vec3::ZERO, s);
         // Far from the origin as well.
         let offset = Vec3::new(3.0e38, -1.0e38, 2.0e30);
         let moved = tri.map(|p| p + offset);
-        trace_hard(&[moved], &[(offset, s)], offset, s);
+        let far = trace_hard(&[moved], &[(offset, s)], offset, s);
+        // Where products of coordinates fit in f32 (|x| below about 1e19)
+        // rays find the geometry, 2 to 62 of the ~200 here; beyond, the
+        // squared lengths overflow and everything is missed, cleanly.
+        if exponent <= 10 {
+            assert!(
+                near > 0 && far > 0,
+                "scale 1e{exponent}: {near} and {far} hits"
+            );
+        }
     }
 }
 

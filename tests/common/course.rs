@@ -3,7 +3,8 @@
 //! under `../shared/scenes/cs184` when it exists
 //! ([`pathtracer::scene::course_files`]). A test that needs a file that is
 //! not there says so on the test run's output, with how to enable it, and
-//! returns (it cannot check what it does not have).
+//! returns (it cannot check what it does not have); under CI (`CI=true`)
+//! it fails instead.
 //!
 //! Also the CBbunny scene and the course's reference render of it, as the
 //! tests that compare against the course need them.
@@ -19,8 +20,17 @@ use pathtracer::scene::{course_files, Scene};
 
 /// Says on the test run's output (not the captured output, which `cargo
 /// test` hides for a passing test) that the running test skipped because
-/// `what` was not found, and how to enable it.
+/// `what` was not found, and how to enable it. Under CI (`CI=true`) a
+/// missing course file fails the test instead: the checks against the
+/// course's scenes and render must not pass there by skipping.
 pub fn skipped(what: &str) {
+    let ci = std::env::var("CI").is_ok_and(|v| v == "true" || v == "1");
+    assert!(
+        !ci,
+        "{what} not found ({}) under CI, where the course's scenes must be: {}",
+        course_files::searched(),
+        course_files::HOW_TO_ENABLE
+    );
     let thread = std::thread::current();
     let test = thread
         .name()

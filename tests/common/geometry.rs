@@ -206,7 +206,8 @@ pub fn cases(cases: u32) -> ProptestConfig {
 }
 
 /// Traces `ray` with a linear scan and a BVH over `primitives`: nothing
-/// panics, no hit has a NaN, and the two agree on whether anything is hit.
+/// panics, no hit has a NaN, and the two agree on the hit distance and on
+/// occlusion.
 /// Returns the linear scan's hit.
 pub fn trace_both(primitives: &Primitives, bvh: &BvhAccel, ray: &Ray) -> Option<Hit> {
     let linear = LinearScan::new(primitives);
@@ -215,6 +216,19 @@ pub fn trace_both(primitives: &Primitives, bvh: &BvhAccel, ray: &Ray) -> Option<
     for h in hit.iter().chain(bvh_hit.iter()) {
         assert_no_nan(h);
     }
-    let _ = (linear.occluded(ray), bvh.occluded(ray));
+    // The BVH finds what the scan finds: the same distance (ties between
+    // primitives at one distance may pick either), and occlusion agrees.
+    match (&hit, &bvh_hit) {
+        (Some(a), Some(b)) => assert_eq!(a.t, b.t, "BVH hit differs from the scan's: {ray:?}"),
+        (None, None) => {}
+        _ => panic!(
+            "the BVH and the scan disagree on a hit: {hit:?} against {bvh_hit:?} for {ray:?}"
+        ),
+    }
+    assert_eq!(
+        linear.occluded(ray),
+        bvh.occluded(ray),
+        "occlusion differs: {ray:?}"
+    );
     hit
 }
