@@ -196,7 +196,7 @@ fn mean(rendered: &Rendered) -> f64 {
 const HEADER: &str = "# Symptoms: what each mistake looks like
 
 <!-- Written by `cargo run --release --example symptoms`; edit the
-catalogue (src/mistakes/mod.rs) or the example, not this file. -->
+catalogue (src/mistakes/catalogue.rs) or the example, not this file. -->
 
 Each section shows one mistake of the catalogue (`--mistake list`): the
 image a correct course solution renders (`--course-exact`, left), the
