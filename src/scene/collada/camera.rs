@@ -17,6 +17,7 @@
 //! `2 atan(tan(hfov / 2) / aspect_ratio)`. With only `yfov` and an aspect
 //! ratio, `hfov = 2 atan(tan(vfov / 2) * aspect_ratio)`. Anything missing
 //! takes [`CameraInfo::default`]: hfov 50, vfov 35, znear 0.001, zfar 1000.
+//! A field of view under 0.01 or over 179 degrees either way is warned about.
 
 use glam::Vec3;
 use roxmltree::Node;
@@ -25,6 +26,7 @@ use super::super::{CameraInfo, SceneError};
 use super::numbers::single_float;
 use super::transform::Placement;
 use super::xml::{child, descend, Doc};
+use crate::math::float::readable;
 
 /// The camera `camera` placed by `place`.
 pub fn camera_info(
@@ -81,8 +83,32 @@ pub fn camera_info(
     if !(info.znear >= 0.0 && info.znear < info.zfar) {
         return Err(doc.err(perspective, "expected 0 <= znear < zfar"));
     }
+    let (narrowest, widest) = (
+        info.hfov_deg.min(info.vfov_deg),
+        info.hfov_deg.max(info.vfov_deg),
+    );
+    if !(FOV_WARNING_DEG.0..=FOV_WARNING_DEG.1).contains(&narrowest)
+        || !(FOV_WARNING_DEG.0..=FOV_WARNING_DEG.1).contains(&widest)
+    {
+        warnings.push(doc.note(
+            perspective,
+            format!(
+                "the field of view is {} x {} degrees (from <xfov>, <yfov> and <aspect_ratio>): \
+                 outside {} to {} degrees, the picture shows a speck of the scene or a smear of it",
+                readable(info.hfov_deg),
+                readable(info.vfov_deg),
+                FOV_WARNING_DEG.0,
+                FOV_WARNING_DEG.1
+            ),
+        ));
+    }
     Ok(info)
 }
+
+/// Fields of view (degrees) outside which a camera is warned about: a
+/// hundredth of a degree is a 1000 mm lens's view of a few millimetres,
+/// 179 degrees nearly a half-space.
+const FOV_WARNING_DEG: (f32, f32) = (0.01, 179.0);
 
 #[cfg(test)]
 mod tests {
@@ -116,6 +142,21 @@ mod tests {
         assert!((info.vfov_deg - 37.849).abs() < 0.01, "{}", info.vfov_deg);
         assert_eq!((info.znear, info.zfar), (0.1, 100.0));
         assert!(w.is_empty());
+    }
+
+    #[test]
+    fn a_field_of_view_of_a_speck_or_a_half_space_is_warned_about() {
+        let place = z_up([
+            1., 0., 0., 0., 0., 0., -1., -3., 0., 1., 0., 0., 0., 0., 0., 1.,
+        ]);
+        for (aspect, warned) in [("1.333333", false), ("1e30", true), ("1e-30", true)] {
+            let text = CAMERA.replace("1.333333", aspect);
+            let document = Document::parse(&text).unwrap();
+            let doc = Doc::new(&document, "t.dae");
+            let mut w = Vec::new();
+            camera_info(&doc, document.root_element(), &place, &mut w).unwrap();
+            assert_eq!(w.len(), usize::from(warned), "aspect {aspect}: {w:?}");
+        }
     }
 
     #[test]
