@@ -235,3 +235,17 @@ fn implausible_but_possible_values_are_warnings() {
         albedo: Rgb::new(1.7, 0.1, 0.1)
     }));
 }
+
+#[test]
+fn geometry_placed_out_of_reach_is_an_error_and_collapsed_geometry_a_warning() {
+    let tile = "<matrix>1 0 0 1 0 1 0 0 0 0 1 0 0 0 0 1</matrix>";
+    let text = corrupt(tile, "<matrix>1e30 0 0 1 0 1 0 0 0 0 1 0 0 0 0 1</matrix>");
+    let e = collada::load_str(&text, FILE).unwrap_err();
+    assert!(
+        e.element.ends_with("node[id=tile]/instance_geometry"),
+        "{e}"
+    );
+    assert!(e.problem.contains("coordinates beyond 1e15"), "{e}");
+    let text = corrupt(tile, "<matrix>0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 1</matrix>");
+    one_warning(&text, &["node[id=tile]/instance_geometry", "singular"]);
+}

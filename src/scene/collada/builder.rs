@@ -25,6 +25,7 @@ use super::material::material;
 use super::mesh::LocalMesh;
 use super::transform::Placement;
 use super::xml::Doc;
+use crate::math::float::readable;
 
 /// The scene under construction.
 pub struct SceneBuilder {
@@ -66,11 +67,12 @@ impl SceneBuilder {
         Ok(id)
     }
 
-    /// Appends `local` placed by `place`; `materials[k]` is the material of
-    /// `local.parts[k]`.
+    /// Appends `local` placed by `place` (for `instance`, named in errors);
+    /// `materials[k]` is the material of `local.parts[k]`.
     pub fn add_mesh(
         &mut self,
         doc: &Doc,
+        instance: Node,
         local: &LocalMesh,
         place: &Placement,
         materials: &[MaterialId],
@@ -82,8 +84,11 @@ impl SceneBuilder {
             return Err(SceneError::new(doc.file, "", "more than 2^32 vertices"));
         }
         let base = base as u32;
-        mesh.positions
-            .extend(local.positions.iter().map(|&p| place.point(p)));
+        let placed: Vec<Vec3> = local.positions.iter().map(|&p| place.point(p)).collect();
+        for &p in &placed {
+            check_coordinates(doc, instance, p)?;
+        }
+        mesh.positions.extend(placed);
         for (part, &material) in local.parts.iter().zip(materials) {
             for &[a, b, c] in &part.triangles {
                 mesh.triangles.push([base + a, base + b, base + c]);
@@ -93,13 +98,26 @@ impl SceneBuilder {
         Ok(())
     }
 
-    /// Appends a sphere of file-space `radius` centred on the node's origin.
-    pub fn add_sphere(&mut self, radius: f32, place: &Placement, material: MaterialId) {
+    /// Appends a sphere of file-space `radius` centred on the node's origin
+    /// (for `instance`, named in errors).
+    pub fn add_sphere(
+        &mut self,
+        doc: &Doc,
+        instance: Node,
+        radius: f32,
+        place: &Placement,
+        material: MaterialId,
+    ) -> Result<(), SceneError> {
+        let center = place.point(Vec3::ZERO);
+        let radius = radius * place.vector(Vec3::X).length();
+        check_coordinates(doc, instance, center + radius)?;
+        check_coordinates(doc, instance, center - radius)?;
         self.scene.spheres.push(Sphere {
-            center: place.point(Vec3::ZERO),
-            radius: radius * place.vector(Vec3::X).length(),
+            center,
+            radius,
             material,
         });
+        Ok(())
     }
 
     /// The finished scene, with the course's rebuilt vertex normals.
@@ -108,4 +126,27 @@ impl SceneBuilder {
         mesh.normals = area_weighted_vertex_normals(&mesh.positions, &mesh.triangles);
         self.scene
     }
+}
+
+/// The largest coordinate a placed vertex or sphere may have. Tracing
+/// squares coordinates (a sphere's `|o - c|^2`, a triangle's edge
+/// products), and `f32` squares overflow beyond about `1.8e19`; `1e15`
+/// leaves room for ray distances and offsets.
+pub const MAX_COORDINATE: f32 = 1e15;
+
+/// Refuses a placed point `p` of `instance` that is not finite or lies
+/// beyond [`MAX_COORDINATE`].
+fn check_coordinates(doc: &Doc, instance: Node, p: Vec3) -> Result<(), SceneError> {
+    if p.abs().max_element() <= MAX_COORDINATE {
+        return Ok(());
+    }
+    let [x, y, z] = p.to_array().map(readable);
+    Err(doc.err(
+        instance,
+        format!(
+            "geometry is placed at ({x}, {y}, {z}): coordinates beyond {} (or not finite) cannot be \
+             traced in 32-bit floats; check the node matrices",
+            readable(MAX_COORDINATE)
+        ),
+    ))
 }

@@ -104,6 +104,13 @@ impl<'a, 'input> Walker<'_, 'a, 'input, '_> {
     ) -> Result<(), SceneError> {
         let doc = self.doc;
         let geometry = doc.resolve(instance, "url", "geometry")?;
+        // The linear part: a matrix's last row may be padded (a warning of its own).
+        if glam::Mat3::from_mat4(place.t).determinant() * place.g.determinant() == 0.0 {
+            doc.warn(
+                instance,
+                "the node matrices are singular (determinant 0): the geometry collapses onto a plane, a line or a point",
+            );
+        }
         // Symbol -> <material> bindings of this instance.
         let mut bindings = Vec::new();
         if let Some(common) = descend(instance, &["bind_material", "technique_common"]) {
@@ -119,7 +126,8 @@ impl<'a, 'input> Walker<'_, 'a, 'input, '_> {
             Shape::Sphere { radius } => {
                 let bound = bindings.first().map(|&(_, m)| m);
                 let material = self.builder.material_id(doc, bound)?;
-                self.builder.add_sphere(radius, place, material);
+                self.builder
+                    .add_sphere(doc, instance, radius, place, material)?;
             }
             Shape::Mesh(local) => {
                 let mut materials = Vec::with_capacity(local.parts.len());
@@ -139,7 +147,8 @@ impl<'a, 'input> Walker<'_, 'a, 'input, '_> {
                     }
                     materials.push(self.builder.material_id(doc, bound)?);
                 }
-                self.builder.add_mesh(doc, &local, place, &materials)?;
+                self.builder
+                    .add_mesh(doc, instance, &local, place, &materials)?;
             }
         }
         Ok(())
