@@ -49,7 +49,7 @@ pub fn line(args: fmt::Arguments) -> Result<(), StdoutError> {
 }
 
 /// Writes one line to standard error, ignoring a failure to do so.
-pub fn warn(args: fmt::Arguments) {
+pub fn stderr_line(args: fmt::Arguments) {
     let _ = writeln!(io::stderr().lock(), "{args}");
 }
 
@@ -65,7 +65,7 @@ macro_rules! say {
 #[macro_export]
 macro_rules! say_err {
     ($($arg:tt)*) => {
-        $crate::cli::say::warn(format_args!($($arg)*))
+        $crate::cli::say::stderr_line(format_args!($($arg)*))
     };
 }
 

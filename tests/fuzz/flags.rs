@@ -74,25 +74,6 @@ pub fn mutate(rng: &mut impl Rng) -> FlagMutant {
     }
 }
 
-/// The flags a small render gives itself, minus those `fuzzed` sets:
-/// `-r 8 6 -s 4 -m 3 -l 1 -t 1`.
-pub fn small_flags_except(fuzzed: &[String]) -> Vec<String> {
-    let defaults = [
-        ("-r", vec!["8", "6"]),
-        ("-s", vec!["4"]),
-        ("-m", vec!["3"]),
-        ("-l", vec!["1"]),
-        ("-t", vec!["1"]),
-    ];
-    defaults
-        .iter()
-        .filter(|(flag, _)| !fuzzed.iter().any(|f| f == flag))
-        .flat_map(|(flag, values)| {
-            std::iter::once(flag.to_string()).chain(values.iter().map(|v| v.to_string()))
-        })
-        .collect()
-}
-
 /// Whether a refusal quotes one of `flags`' values as typed: clap's
 /// "invalid value 'X'" must name an X that was typed.
 pub fn quotes_as_typed(message: &str, flags: &[String]) -> bool {

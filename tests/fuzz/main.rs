@@ -28,7 +28,7 @@ mod scenes;
 use rand::SeedableRng;
 use rand_pcg::Pcg64;
 
-use run::{run, small_render, Outcome, Workspace};
+use run::{run, small_flags_except, small_render, Outcome, Workspace};
 
 /// Inputs of each kind in a test run, unless `FUZZ_CASES` says.
 const CASES: usize = 200;
@@ -157,7 +157,7 @@ fn run_map(space: &Workspace, bytes: &[u8], extension: &str) -> Outcome {
 /// other flags; no warning is about the input.
 fn run_flags(space: &Workspace, flags: &[String]) -> Outcome {
     let image = space.path("out.exr");
-    let mut args = flags::small_flags_except(flags);
+    let mut args = small_flags_except(flags);
     args.extend(flags.iter().cloned());
     args.extend(["-f".to_string(), image.display().to_string()]);
     run(&args, &image, "<none>")

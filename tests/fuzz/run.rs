@@ -15,9 +15,26 @@ const PATHTRACER: &str = env!("CARGO_BIN_EXE_pathtracer");
 /// The longest a tiny render may take before it counts as a hang.
 const TIME_LIMIT: Duration = Duration::from_secs(60);
 
-/// The flags of every fuzz render: tiny, one thread, few samples, with
-/// light sampling and bounces so every material is evaluated.
-pub const SMALL: [&str; 10] = ["-r", "8", "6", "-s", "4", "-m", "3", "-l", "1", "-t"];
+/// The flags of every fuzz render, with their values: tiny, one thread,
+/// few samples, with light sampling and bounces so every material is
+/// evaluated.
+const SMALL: [(&str, &[&str]); 5] = [
+    ("-r", &["8", "6"]),
+    ("-s", &["4"]),
+    ("-m", &["3"]),
+    ("-l", &["1"]),
+    ("-t", &["1"]),
+];
+
+/// The small render's flags, minus those `fuzzed` sets.
+pub fn small_flags_except(fuzzed: &[String]) -> Vec<String> {
+    SMALL
+        .iter()
+        .filter(|(flag, _)| !fuzzed.iter().any(|f| f == flag))
+        .flat_map(|(flag, values)| std::iter::once(*flag).chain(values.iter().copied()))
+        .map(str::to_string)
+        .collect()
+}
 
 /// What one input did.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -127,8 +144,7 @@ fn check_image(path: &Path) -> Result<(), String> {
 /// The arguments of a small render of `scene` (or the built-in scene) to
 /// `image`, with `extra` flags after the small ones.
 pub fn small_render(scene: Option<&Path>, image: &Path, extra: &[String]) -> Vec<String> {
-    let mut args: Vec<String> = SMALL.iter().map(|s| s.to_string()).collect();
-    args.push("1".into());
+    let mut args = small_flags_except(&[]);
     args.extend(extra.iter().cloned());
     args.push("-f".into());
     args.push(image.display().to_string());
