@@ -9,12 +9,14 @@
 
 use std::os::unix::fs::PermissionsExt;
 use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
 use std::time::Duration;
 
 use pathtracer::check::{
     battery, judge, scene_for_checks, Capabilities, Check, CheckResult, Outcome, Stage, Student,
 };
 use pathtracer::mistakes::Mistake;
+use pathtracer::scene::Scene;
 
 const PATHTRACER: &str = env!("CARGO_BIN_EXE_pathtracer");
 
@@ -42,7 +44,15 @@ fn stand_in(dir: &Path, mistake: Option<Mistake>, seed: u64) -> PathBuf {
 struct Bench {
     dir: tempfile::TempDir,
     scene_file: String,
-    stage: Stage,
+    stage: &'static Stage,
+}
+
+/// One stage for every test, keeping its renders: the tests judge the
+/// same checks many times (the null images of a check, its suspects'),
+/// and each image is rendered once. Every bench exports the same scene.
+fn shared_stage(scene: Scene) -> &'static Stage {
+    static STAGE: OnceLock<Stage> = OnceLock::new();
+    STAGE.get_or_init(|| Stage::remembering(scene))
 }
 
 impl Bench {
@@ -55,7 +65,7 @@ impl Bench {
         let (file, scene) = scene_for_checks(Some(&empty), dir.path()).unwrap();
         Bench {
             scene_file: file.to_string_lossy().into_owned(),
-            stage: Stage::new(scene),
+            stage: shared_stage(scene),
             dir,
         }
     }
@@ -83,7 +93,7 @@ impl Bench {
                     &student,
                     capabilities,
                     &self.scene_file,
-                    &self.stage,
+                    self.stage,
                     alpha,
                     2,
                 )
@@ -291,7 +301,7 @@ fn a_broken_binary_gets_a_clear_line() {
             &student,
             caps,
             &bench.scene_file,
-            &bench.stage,
+            bench.stage,
             1e-3,
             2,
         );
@@ -304,15 +314,7 @@ fn a_broken_binary_gets_a_clear_line() {
         script(dir, "hang.sh", "sleep 30"),
         Duration::from_millis(300),
     );
-    let r = judge(
-        &check,
-        &hang,
-        caps,
-        &bench.scene_file,
-        &bench.stage,
-        1e-3,
-        2,
-    );
+    let r = judge(&check, &hang, caps, &bench.scene_file, bench.stage, 1e-3, 2);
     assert!(
         matches!(&r.outcome, Outcome::Error(why) if why.contains("within")),
         "{r:?}"
@@ -322,6 +324,6 @@ fn a_broken_binary_gets_a_clear_line() {
     let caps = Capabilities {
         accumulate_flag: false,
     };
-    let r = judge(&no_o, &hang, caps, &bench.scene_file, &bench.stage, 1e-3, 2);
+    let r = judge(&no_o, &hang, caps, &bench.scene_file, bench.stage, 1e-3, 2);
     assert!(matches!(&r.outcome, Outcome::Skipped(why) if why.contains("-o")));
 }

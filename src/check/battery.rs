@@ -7,6 +7,9 @@
 //! so that adaptive sampling, on by default in a binary whose part 5 is
 //! written, never stops a pixel (its test runs every 32 samples).
 
+use std::collections::HashMap;
+use std::sync::Mutex;
+
 use crate::bvh::WideBvhAccel;
 use crate::course::{
     Assignment, CourseExact, CourseSampling, CourseView, Lamps, StarterDirect, StarterTracer,
@@ -134,6 +137,9 @@ pub struct Stage {
     scene: Scene,
     camera: Camera,
     accel: WideBvhAccel,
+    /// The images rendered so far, when the stage keeps them
+    /// ([`Stage::remembering`]), by check, mistakes and seed.
+    kept: Option<Mutex<HashMap<String, Vec<u8>>>>,
 }
 
 impl Stage {
@@ -144,12 +150,40 @@ impl Stage {
             accel: WideBvhAccel::new(primitives),
             scene,
             camera,
+            kept: None,
+        }
+    }
+
+    /// A stage that keeps every image it renders (half a megabyte each)
+    /// and hands it out again for the same check, mistakes and seed: for
+    /// judging the same checks many times, as the checker's tests do. A
+    /// battery judges each check once and needs no keeping.
+    pub fn remembering(scene: Scene) -> Self {
+        Stage {
+            kept: Some(Mutex::default()),
+            ..Stage::new(scene)
         }
     }
 
     /// The 8-bit image a correct course solution (with `mistakes`) renders
     /// for `check` with `seed`, as its PNG holds it (three bytes a pixel).
+    /// The image does not depend on `threads`.
     pub fn render(&self, check: &Check, mistakes: Mistakes, seed: u64, threads: usize) -> Vec<u8> {
+        let Some(kept) = &self.kept else {
+            return self.render_anew(check, mistakes, seed, threads);
+        };
+        let key = format!("{check:?} {mistakes:?} {seed}");
+        if let Some(image) = kept.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
+            return image.clone();
+        }
+        let image = self.render_anew(check, mistakes, seed, threads);
+        kept.lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .insert(key, image.clone());
+        image
+    }
+
+    fn render_anew(&self, check: &Check, mistakes: Mistakes, seed: u64, threads: usize) -> Vec<u8> {
         let exact = CourseExact {
             assignment: Assignment::PathTracer1,
         };
