@@ -23,6 +23,8 @@ mod part2;
 mod part3;
 mod part4;
 mod part5;
+#[path = "../support/parts.rs"]
+mod parts;
 mod picture;
 mod setup;
 
@@ -36,44 +38,17 @@ use part5::part5;
 
 type Result<T> = std::result::Result<T, Box<dyn Error>>;
 
-fn run(args: &[String]) -> Result<()> {
-    let mut threads = 2;
-    let mut parts = Vec::new();
-    let mut it = args.iter();
-    while let Some(arg) = it.next() {
-        match arg.as_str() {
-            "-t" => threads = it.next().ok_or("-t needs a value")?.parse()?,
-            "part1" | "part2" | "part3" | "part4" | "part5" => parts.push(arg.clone()),
-            other => {
-                return Err(
-                    format!("unexpected argument {other}; expected part1 .. part5 [-t N]").into(),
-                )
-            }
-        }
-    }
-    if parts.is_empty() {
-        return Err("which part? part1 .. part5".into());
-    }
-    for part in parts {
-        println!("{part}:");
-        match part.as_str() {
-            "part1" => part1(threads)?,
-            "part2" => part2(threads)?,
-            "part3" => part3(threads)?,
-            "part4" => part4(threads)?,
-            _ => part5(threads)?,
-        }
-    }
-    Ok(())
-}
+/// The size the figures are rendered at (the course's 480 x 360 framing,
+/// `setup`'s `FRAME`, at half the resolution).
+const SIZE: (u32, u32) = (240, 180);
 
 fn main() -> std::process::ExitCode {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    match run(&args) {
-        Ok(()) => std::process::ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("error: {e}");
-            std::process::ExitCode::FAILURE
-        }
-    }
+    let names = ["part1", "part2", "part3", "part4", "part5"];
+    parts::run_parts(&names, |part, threads| match part {
+        "part1" => part1(threads),
+        "part2" => part2(threads),
+        "part3" => part3(threads),
+        "part4" => part4(threads),
+        _ => part5(threads),
+    })
 }

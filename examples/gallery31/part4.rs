@@ -5,8 +5,8 @@ use pathtracer::math::{luminance, Rgb};
 use pathtracer::render::Rendered;
 
 use crate::picture::{grid, Picture};
-use crate::setup::{paths, Setup, SIZE};
-use crate::Result;
+use crate::setup::{paths, Setup};
+use crate::{Result, SIZE};
 
 /// Part 4: direct against indirect light, each bounce alone and
 /// accumulated, Russian roulette at several depths, samples per pixel.

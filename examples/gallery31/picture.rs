@@ -1,5 +1,6 @@
 //! The pictures of a figure and the labelled grid (PNG) they are written
-//! as.
+//! as. Shared (`#[path]`) by `examples/gallery31`, `examples/gallery` and
+//! `examples/symptoms`.
 
 #[path = "../support/font.rs"]
 mod font;
@@ -22,6 +23,17 @@ pub struct Picture {
     pub width: u32,
     pub height: u32,
     pub display: Vec<Rgb>,
+    /// Text drawn over the picture (a colour bar's ticks).
+    pub notes: Vec<Note>,
+}
+
+/// A line of text drawn over a picture, its top left corner at `(x, y)`
+/// pixels from the picture's own top left corner.
+#[allow(dead_code)] // Made by examples/gallery, not by gallery31 or symptoms.
+pub struct Note {
+    pub x: i32,
+    pub y: i32,
+    pub text: String,
 }
 
 impl Picture {
@@ -31,17 +43,19 @@ impl Picture {
             width,
             height,
             display: radiance.iter().map(|&l| tone_map(l)).collect(),
+            notes: Vec::new(),
         }
     }
 
     /// Display values as they are, in `[0, 1]` (a colour map).
-    #[allow(dead_code)] // Used by examples/symptoms, not by gallery31.
+    #[allow(dead_code)] // Used by examples/symptoms and gallery, not by gallery31.
     pub fn display(label: impl Into<String>, width: u32, height: u32, display: Vec<Rgb>) -> Self {
         Picture {
             label: label.into(),
             width,
             height,
             display,
+            notes: Vec::new(),
         }
     }
 
@@ -51,6 +65,7 @@ impl Picture {
     }
 
     /// The course's sample-rate image of an adaptive render.
+    #[allow(dead_code)] // Used by examples/gallery31 and symptoms, not by gallery.
     pub fn rate(label: impl Into<String>, rendered: &Rendered, max_samples: u32) -> Self {
         Picture {
             label: label.into(),
@@ -61,6 +76,7 @@ impl Picture {
                 .iter()
                 .map(|e| rate_colour(e.samples, max_samples))
                 .collect(),
+            notes: Vec::new(),
         }
     }
 }
@@ -92,9 +108,14 @@ pub fn grid(name: &str, columns: usize, pictures: &[Picture]) -> Result<()> {
     {
         let root = BitMapBackend::with_buffer(&mut buffer, (width, height)).into_drawing_area();
         let style = TextStyle::from(("sans-serif", 15).into_font()).color(&BLACK);
+        let small = TextStyle::from(("sans-serif", 12).into_font()).color(&BLACK);
         for (i, picture) in pictures.iter().enumerate() {
             let (x0, y0) = ((i as u32 % cols) * cell_w, (i as u32 / cols) * cell_h);
             root.draw_text(&picture.label, &style, (x0 as i32 + 2, y0 as i32 + 2))?;
+            for note in &picture.notes {
+                let at = (x0 as i32 + note.x, (y0 + LABEL) as i32 + note.y);
+                root.draw_text(&note.text, &small, at)?;
+            }
         }
         root.present()?;
     }

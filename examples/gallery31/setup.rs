@@ -1,10 +1,14 @@
-//! A course scene loaded and framed for the gallery, its renders, and the
-//! tracers of the binaries the figures stand for.
+//! A course scene (or one made in code) loaded and framed for the
+//! galleries, its renders, and the tracers of the binaries the figures
+//! stand for. Shared by `examples/gallery31` and `examples/gallery`
+//! (`#[path]`); each defines the `Result` and the render size `SIZE` this
+//! module uses.
 
 use pathtracer::adaptive::Adaptive;
 use pathtracer::bvh::BvhAccel;
 use pathtracer::cli::drivers::render_lighting;
 use pathtracer::direct::DirectLights;
+use pathtracer::environment::EnvironmentLight;
 use pathtracer::global::{DirectStrategy, PathTracer, Roulette};
 use pathtracer::intersect::Primitives;
 use pathtracer::plan::Plan;
@@ -12,25 +16,30 @@ use pathtracer::raygen::Camera;
 use pathtracer::render::{RenderSettings, Rendered};
 use pathtracer::sampling::SamplerKind;
 use pathtracer::scene::{course_files, Scene};
-use pathtracer::world::World;
+use pathtracer::world::{World, WorldOptions};
 
-use crate::Result;
+use crate::{Result, SIZE};
 
-/// The course frames scenes for this size...
+/// The course frames scenes for this size; the galleries render them at
+/// their own `SIZE`, of the same aspect, so they show the same view.
 const FRAME: (u32, u32) = (480, 360);
-/// ...and the gallery renders them at this one.
-pub const SIZE: (u32, u32) = (240, 180);
 
-/// A course scene, its BVH and the camera the course places for [`FRAME`].
+/// A scene, its BVH, the camera the course places for [`FRAME`], and what
+/// the world is lit and shaded with.
 pub struct Setup {
     name: String,
     pub scene: Scene,
     pub accel: BvhAccel,
     pub camera: Camera,
+    /// BSDF options and the rest (`--microfacet-sampling`, ...).
+    pub options: WorldOptions,
+    /// The environment light (`-e`), if any.
+    pub environment: Option<EnvironmentLight>,
     threads: usize,
 }
 
 impl Setup {
+    /// A course scene, found under `$CS184_SCENES`.
     pub fn load(file: &str, threads: usize) -> Result<Self> {
         let path = course_files::find(file).ok_or_else(|| {
             format!(
@@ -39,17 +48,24 @@ impl Setup {
                 course_files::HOW_TO_ENABLE
             )
         })?;
-        let scene = pathtracer::scene::load(&path)?;
+        Ok(Setup::of(file, pathtracer::scene::load(&path)?, threads))
+    }
+
+    /// `scene` (a course scene changed in code, or one made in code),
+    /// named `name` in what the renders print.
+    pub fn of(name: &str, scene: Scene, threads: usize) -> Self {
         let primitives = Primitives::from_scene(&scene);
         let camera =
             Camera::course_placement(&scene.camera, &primitives.bounds(), FRAME.0, FRAME.1);
-        Ok(Setup {
-            name: file.to_string(),
+        Setup {
+            name: name.to_string(),
             scene,
             accel: BvhAccel::new(primitives),
             camera,
+            options: WorldOptions::default(),
+            environment: None,
             threads,
-        })
+        }
     }
 
     pub fn settings(&self, samples_per_pixel: u32, seed: u64) -> RenderSettings {
@@ -74,7 +90,8 @@ impl Setup {
         adaptive: Option<Adaptive>,
         seed: u64,
     ) -> Rendered {
-        let world = World::new(&self.scene, &self.accel);
+        let world = World::with_options(&self.scene, &self.accel, self.options)
+            .with_environment(self.environment.clone());
         let plan = Plan::new(&self.scene, &world.lights, tracer, &self.camera.lens);
         let tracer = plan.specialise(tracer);
         let rendered = render_lighting(
@@ -115,6 +132,7 @@ pub fn paths(l: u32, m: u32, accumulate: bool) -> PathTracer {
 }
 
 /// The direct-only tracer of `part3-direct`.
+#[allow(dead_code)] // Used by examples/gallery31, not by examples/gallery.
 pub fn direct(strategy: DirectStrategy) -> PathTracer {
     PathTracer {
         direct: strategy,
