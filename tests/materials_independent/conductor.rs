@@ -176,7 +176,7 @@ fn the_sampler_estimates_the_quadrature_albedo() {
             for c in 0..3 {
                 let e = MeanEstimate::of(weights.iter().map(|w| w[c]));
                 let expected = row.library[c];
-                let bound = z * e.se + QUADRATURE_TOL * expected;
+                let bound = z * e.held_se("sampled albedo") + QUADRATURE_TOL * expected;
                 assert!(
                     (e.mean - expected).abs() <= bound,
                     "{sampling:?}, alpha {}, cos_o {}, channel {c}: sampled {:.5} (se {:.1e}) \
