@@ -26,7 +26,7 @@ use std::f64::consts::PI;
 
 use common::{
     accel, assert_mean_matches, polygon_irradiance, ray_towards, rect_corners, rect_light, tracer,
-    MeanEstimate, SceneBuilder, ALPHA, HEMISPHERE, LIGHTS,
+    under_light_and_quad, MeanEstimate, SceneBuilder, ALPHA, HEMISPHERE, LIGHTS,
 };
 use glam::{DVec3, Vec3};
 use pathtracer::direct::DirectLights;
@@ -146,17 +146,7 @@ fn coloured_rectangle_light_on_a_coloured_floor() {
         });
         b.floor(m, 5.0);
     };
-    let mut with_light = SceneBuilder::new();
-    floor(&mut with_light);
-    with_light.light(light);
-    let with_light = with_light.finish();
-    let mut with_quad = SceneBuilder::new();
-    floor(&mut with_quad);
-    let lamp = with_quad.material(Material::Emission {
-        radiance: rgb(RADIANCE),
-    });
-    with_quad.quad(lamp, corners);
-    let with_quad = with_quad.finish();
+    let (with_light, with_quad) = under_light_and_quad(floor, light, rgb(RADIANCE), corners);
     let (a1, a2) = (accel(&with_light), accel(&with_quad));
     let (s1, s2) = (World::new(&with_light, &a1), World::new(&with_quad, &a2));
 

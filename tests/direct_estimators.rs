@@ -19,8 +19,8 @@ mod common;
 use std::f64::consts::PI;
 
 use common::{
-    accel, assert_mean_matches, assert_means_agree, diffuse, emission, estimate,
-    polygon_irradiance, ray_towards, rect_corners, rect_light, tracer, SceneBuilder, ALPHA,
+    accel, assert_mean_matches, assert_means_agree, diffuse, estimate, polygon_irradiance,
+    ray_towards, rect_corners, rect_light, tracer, under_light_and_quad, SceneBuilder, ALPHA,
     HEMISPHERE, LIGHTS,
 };
 use glam::{DVec3, Vec3};
@@ -96,15 +96,8 @@ fn rectangle_irradiance_matches_lamberts_formula() {
     );
     assert!((exact / approx - 1.0).abs() < 1e-3, "{exact} vs {approx}");
 
-    let mut with_light = SceneBuilder::new();
-    floor(&mut with_light);
-    with_light.light(light);
-    let with_light = with_light.finish();
-    let mut with_quad = SceneBuilder::new();
-    floor(&mut with_quad);
-    let lamp = with_quad.material(emission(radiance));
-    with_quad.quad(lamp, corners);
-    let with_quad = with_quad.finish();
+    let (with_light, with_quad) =
+        under_light_and_quad(floor, light, Vec3::splat(radiance), corners);
 
     let alpha = ALPHA / 3.0;
     let (a1, a2) = (accel(&with_light), accel(&with_quad));

@@ -65,6 +65,26 @@ pub fn emission(radiance: f32) -> Material {
     }
 }
 
+/// The same scene twice, lit by one rectangle of radiance `radiance` at
+/// `corners`: once as `light` (a light the renderer samples), once as an
+/// emissive quad (triangles found by rays and sampled as emitters). The
+/// rest of the scene is what `rest` adds.
+pub fn under_light_and_quad(
+    rest: impl Fn(&mut SceneBuilder),
+    light: Light,
+    radiance: Vec3,
+    corners: [Vec3; 4],
+) -> (Scene, Scene) {
+    let mut with_light = SceneBuilder::new();
+    rest(&mut with_light);
+    with_light.light(light);
+    let mut with_quad = SceneBuilder::new();
+    rest(&mut with_quad);
+    let lamp = with_quad.material(Material::Emission { radiance });
+    with_quad.quad(lamp, corners);
+    (with_light.finish(), with_quad.finish())
+}
+
 /// Builds a [`Scene`]: quads with their own vertices (so flat shading
 /// normals), analytic spheres, lights.
 #[derive(Default)]
