@@ -4,7 +4,7 @@
 //! harmless change of floating-point order does not fail them.
 //!
 //! A new or changed snapshot is reviewed with `cargo insta review`
-//! (or accepted with `INSTA_UPDATE=always cargo test --release --test snapshots`).
+//! (or accepted with `INSTA_UPDATE=always cargo test --profile quick --test snapshots`).
 
 use std::path::Path;
 

@@ -6,11 +6,11 @@
 //! negative pixel; nonsense (a misspelt field, an unphysical value) must
 //! be refused or warned about; legal input must render.
 //!
-//! `cargo test --release --test fuzz` runs a bounded number of inputs
+//! `cargo test --profile quick --test fuzz` runs a bounded number of inputs
 //! (seconds) after the corpus of known cases. For a longer run:
 //!
 //! ```text
-//! FUZZ_CASES=2000 FUZZ_SEED=7 cargo test --release --test fuzz -- --nocapture
+//! FUZZ_CASES=2000 FUZZ_SEED=7 cargo test --profile quick --test fuzz -- --nocapture
 //! ```
 //!
 //! Its figures are in docs/16-bad-input.md.
