@@ -1,7 +1,8 @@
 //! Statistical tests of every direction sampler against its density.
 //!
 //! A table of sampler families ([`families`]) goes through the same
-//! checks (design.md, "Testing"):
+//! checks, each a sampler must pass to be unbiased with the density it
+//! reports:
 //!
 //! 1. the density integrates to 1 over its domain (midpoint quadrature on a
 //!    fine `(cos theta, phi)` grid, where `d omega = d cos(theta) d phi`);
