@@ -25,8 +25,8 @@ mod common;
 use std::f64::consts::PI;
 
 use common::{
-    accel, assert_mean_matches, polygon_irradiance, ray_towards, rect_corners, rect_light, tracer,
-    under_light_and_quad, MeanEstimate, SceneBuilder, ALPHA, HEMISPHERE, LIGHTS,
+    accel, assert_mean_matches, coloured_rect_light, polygon_irradiance, ray_towards, rect_corners,
+    tracer, under_light_and_quad, MeanEstimate, SceneBuilder, ALPHA, HEMISPHERE, LIGHTS,
 };
 use glam::{DVec3, Vec3};
 use pathtracer::direct::DirectLights;
@@ -111,30 +111,13 @@ fn assert_rgb_matches(label: &str, est: [MeanEstimate; 3], expected: [f64; 3], f
 /// rectangle light a BSDF ray crosses (the MIS case, 12 standard errors).
 #[test]
 fn coloured_rectangle_light_on_a_coloured_floor() {
-    let grey = rect_light(
-        1.0,
+    let light = coloured_rect_light(
+        rgb(RADIANCE),
         Vec3::new(0.3, 1.0, -0.2),
         Vec3::new(-0.25, -1.0, 0.15),
         0.8,
         0.5,
     );
-    let Light::Area {
-        center,
-        direction,
-        dim_x,
-        dim_y,
-        ..
-    } = grey
-    else {
-        unreachable!()
-    };
-    let light = Light::Area {
-        radiance: rgb(RADIANCE),
-        center,
-        direction,
-        dim_x,
-        dim_y,
-    };
     let corners = rect_corners(&light);
     let e_unit = polygon_irradiance(DVec3::ZERO, DVec3::Y, &corners.map(|c| c.as_dvec3()), 1.0);
     let expected: [f64; 3] = [0, 1, 2].map(|c| ALBEDO[c] as f64 / PI * RADIANCE[c] as f64 * e_unit);
@@ -288,23 +271,21 @@ fn coloured_lights_in_a_coloured_integrating_sphere() {
     let m = 4;
     let point_at = DVec3::new(0.6, -0.4, 0.2);
     let rect_at = DVec3::new(0.2, -0.1, -0.2);
-    let grey_rect = rect_light(1.0, rect_at.as_vec3(), (x - rect_at).as_vec3(), 1.0, 0.8);
+    let rect = coloured_rect_light(
+        rgb(RADIANCE),
+        rect_at.as_vec3(),
+        (x - rect_at).as_vec3(),
+        1.0,
+        0.8,
+    );
     let Light::Area {
-        center,
         direction,
         dim_x,
         dim_y,
         ..
-    } = grey_rect
+    } = rect
     else {
         unreachable!()
-    };
-    let rect = Light::Area {
-        radiance: rgb(RADIANCE),
-        center,
-        direction,
-        dim_x,
-        dim_y,
     };
     let corners = rect_corners(&rect).map(|c| c.as_dvec3());
     // The camera ray starts in front of the rectangle and moves away from

@@ -171,10 +171,15 @@ impl SceneBuilder {
 /// A rectangular area light of `radiance` centred at `center`, facing
 /// `facing` (normalised here), with sides `sx` and `sy`.
 pub fn rect_light(radiance: f32, center: Vec3, facing: Vec3, sx: f32, sy: f32) -> Light {
+    coloured_rect_light(Vec3::splat(radiance), center, facing, sx, sy)
+}
+
+/// [`rect_light`] of RGB radiance `radiance`.
+pub fn coloured_rect_light(radiance: Vec3, center: Vec3, facing: Vec3, sx: f32, sy: f32) -> Light {
     let direction = facing.normalize();
     let frame = Frame::from_z(direction);
     Light::Area {
-        radiance: Vec3::splat(radiance),
+        radiance,
         center,
         direction,
         dim_x: sx * frame.to_world(Vec3::X),
