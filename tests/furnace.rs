@@ -1,4 +1,4 @@
-//! The furnace test: inside a closed box whose walls reflect diffusely with
+//! The furnace test: inside a closed room whose walls reflect diffusely with
 //! albedo `a` and emit `Le`, radiance is the same everywhere and in every
 //! direction. Each bounce adds the walls' emission attenuated once more by
 //! `a`, so a path tracer with at most `m` bounces must give
@@ -28,7 +28,7 @@
 
 mod common;
 
-use common::{assert_mean_matches, MeanEstimate, ALPHA};
+use common::{assert_mean_matches, MeanEstimate, SceneBuilder, ALPHA};
 
 use glam::Vec3;
 use pathtracer::bvh::BvhAccel;
@@ -37,44 +37,31 @@ use pathtracer::global::{DirectStrategy, PathTracer, Roulette};
 use pathtracer::intersect::{Primitives, Ray};
 use pathtracer::math::warp::sample_uniform_sphere;
 use pathtracer::sampling::{IndependentSampler, Sampler};
-use pathtracer::scene::normals::area_weighted_vertex_normals;
-use pathtracer::scene::{Material, Scene, Sphere, TriangleMesh};
+use pathtracer::scene::{Material, Scene, Sphere};
 use pathtracer::world::World;
 
-/// A closed unit cube of 12 triangles with one material. Each face has its
-/// own four vertices, so the course's rebuilt vertex normals are the face
-/// normals: shared corners would average three faces' normals, and a
-/// direction sampled around such a smoothed normal can leave through the
-/// wall, which is not what a Lambertian box does.
+/// The furnace: a closed faceted sphere of radius 0.5 around
+/// `(0.5, 0.5, 0.5)`, 8 x 12^2 flat facets of one material.
+///
+/// Not a box: in a box, a light sample on the wall next to the shading
+/// point's, near their shared edge, has `cos_x cos_y / r^2` growing as
+/// `1 / r^2`. Light sampling alone then has an infinite variance, and
+/// with MIS rare samples weigh far more than the rest (measured in the
+/// box: variances uncertain by 26 % to 71 % at 4,000 to 20,000 samples,
+/// and one seed 5.2 standard errors off). On a sphere `cos_x cos_y / r^2
+/// = 1 / (4 R^2)` between any two points, so a light sample weighs nearly
+/// the same wherever it lands; flat facets change that only next to a
+/// facet's edge, where the neighbour is tilted by about `pi / 24`. Every
+/// z-test asserts that its case's variance is known to 25 %
+/// ([`common::HEAVY_TAIL`]); the worst case here is known to 15 %.
 fn furnace(albedo: f32, radiance: f32) -> Scene {
-    let corner = |i: u32| Vec3::new((i & 1) as f32, ((i >> 1) & 1) as f32, ((i >> 2) & 1) as f32);
-    let faces = [
-        [0, 1, 3, 2],
-        [4, 6, 7, 5],
-        [0, 4, 5, 1],
-        [2, 3, 7, 6],
-        [0, 2, 6, 4],
-        [1, 5, 7, 3],
-    ];
-    let corners: Vec<Vec3> = faces.iter().flatten().map(|&i| corner(i)).collect();
-    let triangles: Vec<[u32; 3]> = (0..6u32)
-        .flat_map(|f| [[4 * f, 4 * f + 1, 4 * f + 2], [4 * f, 4 * f + 2, 4 * f + 3]])
-        .collect();
-    let normals = area_weighted_vertex_normals(&corners, &triangles);
-    Scene {
-        source: "furnace".into(),
-        mesh: TriangleMesh {
-            materials: vec![0; triangles.len()],
-            positions: corners,
-            normals,
-            triangles,
-        },
-        materials: vec![Material::EmissiveDiffuse {
-            albedo: Vec3::splat(albedo),
-            radiance: Vec3::splat(radiance),
-        }],
-        ..Scene::default()
-    }
+    let mut b = SceneBuilder::new();
+    let wall = b.material(Material::EmissiveDiffuse {
+        albedo: Vec3::splat(albedo),
+        radiance: Vec3::splat(radiance),
+    });
+    b.faceted_sphere(wall, Vec3::splat(0.5), 0.5, 12);
+    b.finish()
 }
 
 /// Mean and standard error of `n` camera rays in random directions from
@@ -120,20 +107,23 @@ fn with_roulette(direct: DirectStrategy, roulette: Roulette) -> PathTracer {
 /// Both rules of Russian roulette.
 const ROULETTES: [Roulette; 2] = [Roulette::Fixed, Roulette::Throughput];
 
-fn strategies() -> [(&'static str, DirectStrategy); 4] {
+/// The strategies whose estimators are bounded in a closed room. Light
+/// sampling *alone* is not among them: a light sample on a facet next to
+/// the shading point's, near their shared edge, weighs `f Le cos_x cos_y
+/// / (r^2 p_A)`, which grows as `1 / r^2`, and its square is not
+/// integrable. Seen here: one sample of 4,000 at 19.3 where the rest lie
+/// within 1.87 to 2.29 (m = 12, 48^2 facets an octant), a variance that
+/// no sample size pins down. With MIS the light sample's weight `f Le
+/// cos_x / (p_light + p_bsdf)` is at most `a Le`, so it is bounded.
+/// `tests/colour.rs` checks light sampling alone in an integrating sphere
+/// around a rectangle light, where the light keeps its distance.
+fn strategies() -> [(&'static str, DirectStrategy); 3] {
     [
         (
             "light sampling with MIS",
             DirectStrategy::Lights(DirectLights {
                 samples_per_light: 1,
                 mis: true,
-            }),
-        ),
-        (
-            "light sampling alone",
-            DirectStrategy::Lights(DirectLights {
-                samples_per_light: 1,
-                mis: false,
             }),
         ),
         (
@@ -158,14 +148,20 @@ fn furnace_without_russian_roulette_sums_m_bounces() {
             };
             let label = format!("{name}, a = {albedo}, m = {max_depth}");
             let est = estimate(&scene, &tracer, 4000, 7);
-            assert_mean_matches(&label, est, expected, ALPHA / 8.0, 1e-4 * expected);
+            assert_mean_matches(&label, est, expected, ALPHA / 6.0, 1e-4 * expected);
         }
     }
 }
 
+/// Albedos 0.5 and 0.7, not higher: with the course's fixed `q = 0.65`
+/// a path that survives `k` bounces weighs `(a / q)^k` with probability
+/// `q^k`, so the estimator's fourth moment sums `(a^4 / q^3)^k`, which
+/// diverges for `a > q^(3/4) = 0.72`. Its variance is then known only
+/// roughly (uncertain by 23 % at `a = 0.8` and 20,000 samples), and the
+/// interval would not keep its stated rate.
 #[test]
 fn furnace_with_russian_roulette_reaches_le_over_one_minus_a() {
-    for albedo in [0.5, 0.8] {
+    for albedo in [0.5, 0.7] {
         let scene = furnace(albedo as f32, 1.0);
         let expected = 1.0 / (1.0 - albedo);
         for (name, direct) in strategies() {
@@ -174,7 +170,7 @@ fn furnace_with_russian_roulette_reaches_le_over_one_minus_a() {
                 let est = estimate(&scene, &tracer, 20_000, 11);
                 assert!(est.se > 0.0, "Russian roulette adds noise");
                 let label = format!("{name}, a = {albedo}, roulette {roulette:?}");
-                assert_mean_matches(&label, est, expected, ALPHA / 16.0, 0.0);
+                assert_mean_matches(&label, est, expected, ALPHA / 12.0, 0.0);
             }
         }
     }
@@ -193,7 +189,7 @@ fn only_the_m_th_bounce_with_o_0() {
             roulette: Roulette::Off,
         };
         let est = estimate(&scene, &tracer, 4000, 13);
-        assert_mean_matches(name, est, expected, ALPHA / 4.0, 1e-4 * expected);
+        assert_mean_matches(name, est, expected, ALPHA / 3.0, 1e-4 * expected);
     }
 }
 
@@ -238,12 +234,12 @@ fn mirror_and_glass_spheres_are_invisible_in_a_furnace() {
                 let tracer = with_roulette(direct, roulette);
                 let est = estimate(&scene, &tracer, 20_000, 17);
                 let label = format!("{object}, {name}, roulette {roulette:?}");
-                assert_mean_matches(&label, est, expected, ALPHA / 24.0, 0.0);
+                assert_mean_matches(&label, est, expected, ALPHA / 18.0, 0.0);
                 if object == "glass sphere" {
                     let inside =
                         estimate_from(scene.spheres[0].center, &scene, &tracer, 20_000, 19);
                     let label = format!("inside the {object}, {name}, roulette {roulette:?}");
-                    assert_mean_matches(&label, inside, 2.25 * expected, ALPHA / 24.0, 0.0);
+                    assert_mean_matches(&label, inside, 2.25 * expected, ALPHA / 18.0, 0.0);
                 }
             }
         }

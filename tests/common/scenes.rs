@@ -21,6 +21,12 @@ pub const LIGHTS: DirectStrategy = DirectStrategy::Lights(DirectLights {
     samples_per_light: 1,
     mis: true,
 });
+/// Direct light by sampling each light once, without MIS: emission a
+/// BSDF ray finds on a sampled light is not counted.
+pub const LIGHTS_ALONE: DirectStrategy = DirectStrategy::Lights(DirectLights {
+    samples_per_light: 1,
+    mis: false,
+});
 /// Direct light by one uniform hemisphere direction.
 pub const HEMISPHERE: DirectStrategy = DirectStrategy::Hemisphere(DirectHemisphere { samples: 1 });
 
@@ -145,6 +151,50 @@ impl SceneBuilder {
         self.quad(material, [c(f, f, t), c(t, f, t), c(t, t, t), c(f, t, t)]);
         self.quad(material, [c(f, f, f), c(f, f, t), c(f, t, t), c(f, t, f)]);
         self.quad(material, [c(t, f, f), c(t, t, f), c(t, t, t), c(t, f, t)])
+    }
+
+    /// One triangle with corners of its own, so that its vertex normals
+    /// are its face normal.
+    pub fn triangle(&mut self, material: MaterialId, corners: [Vec3; 3]) -> &mut Self {
+        let mesh = &mut self.scene.mesh;
+        let base = mesh.positions.len() as u32;
+        mesh.positions.extend(corners);
+        mesh.triangles.push([base, base + 1, base + 2]);
+        mesh.materials.push(material);
+        self
+    }
+
+    /// A closed sphere of flat facets around `center`: each of the eight
+    /// faces of an octahedron cut into `n^2` triangles whose corners are
+    /// pushed out to `radius` (`8 n^2` facets). Facets do not share
+    /// corners, so each is shaded flat, and neighbours meet at an angle of
+    /// about `pi / (2 n)`: a closed room without the right-angled edges
+    /// and corners of a box.
+    pub fn faceted_sphere(
+        &mut self,
+        material: MaterialId,
+        center: Vec3,
+        radius: f32,
+        n: u32,
+    ) -> &mut Self {
+        for octant in 0..8u32 {
+            let sign = |bit: u32| if octant & bit == 0 { 1.0 } else { -1.0 };
+            let (a, b, c) = (sign(1) * Vec3::X, sign(2) * Vec3::Y, sign(4) * Vec3::Z);
+            let point = |i: u32, j: u32| {
+                let p = a * (n - i - j) as f32 + b * i as f32 + c * j as f32;
+                center + radius * p.normalize()
+            };
+            for i in 0..n {
+                for j in 0..n - i {
+                    self.triangle(material, [point(i, j), point(i + 1, j), point(i, j + 1)]);
+                    if i + j + 1 < n {
+                        let upper = [point(i + 1, j), point(i + 1, j + 1), point(i, j + 1)];
+                        self.triangle(material, upper);
+                    }
+                }
+            }
+        }
+        self
     }
 
     pub fn sphere(&mut self, center: Vec3, radius: f32, material: MaterialId) -> &mut Self {

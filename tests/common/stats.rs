@@ -36,12 +36,12 @@ pub struct MeanEstimate {
     pub variance_error: f64,
 }
 
-/// The [`MeanEstimate::variance_error`] past which a z-test's comparison
-/// line says that the sample's tail is heavy for its size: its variance
-/// is then uncertain by more than a quarter, and the false-failure rate
-/// the test states holds only roughly even with the held `se`. Such a
-/// test should take more samples (finite variance) or bound its
-/// estimator (infinite variance); docs/17-mutation-testing.md lists them.
+/// The largest [`MeanEstimate::variance_error`] a z-test accepts: past
+/// it the sample's variance is uncertain by more than a quarter, and the
+/// false-failure rate the test states would hold only roughly even with
+/// the held `se`. Such a test must take more samples (finite variance) or
+/// bound its estimator (infinite variance); docs/17-mutation-testing.md
+/// tells the cases found and how each was fixed.
 pub const HEAVY_TAIL: f64 = 0.25;
 
 impl MeanEstimate {
@@ -75,16 +75,21 @@ impl MeanEstimate {
     /// The standard error used by the z-tests: `se` at the upper end of
     /// its own uncertainty (`s^2` three of its standard errors high), so
     /// that a sample whose variance came out low by chance, as a
-    /// heavy-tailed one's often does, does not narrow the interval. Says
-    /// so, naming `label`, where the tail is heavy ([`HEAVY_TAIL`]).
+    /// heavy-tailed one's often does, does not narrow the interval.
+    ///
+    /// Panics, naming `label`, where the tail is too heavy for the sample
+    /// to know its variance ([`HEAVY_TAIL`]): no interval built on `se`
+    /// would then keep its stated rate.
     pub fn held_se(&self, label: &str) -> f64 {
-        if self.variance_error > HEAVY_TAIL {
-            eprintln!(
-                "{label}: heavy tail: the sample's variance is uncertain by {:.0} % (n {})",
-                100.0 * self.variance_error,
-                self.n
-            );
-        }
+        assert!(
+            self.variance_error <= HEAVY_TAIL,
+            "{label}: heavy tail: the sample's variance is uncertain by {:.0} % (n {}), \
+             more than {:.0} %: take more samples, or bound the estimator if its variance \
+             is infinite",
+            100.0 * self.variance_error,
+            self.n,
+            100.0 * HEAVY_TAIL
+        );
         self.se * (1.0 + 3.0 * self.variance_error).sqrt()
     }
 }
@@ -92,7 +97,7 @@ impl MeanEstimate {
 /// [`MeanEstimate::held_se`], except where the interval is the floor's
 /// (`z se <= abs_floor`: an estimator exact up to rounding, whose
 /// rounding noise has any tail).
-fn held_above_floor(label: &str, estimate: MeanEstimate, z: f64, abs_floor: f64) -> f64 {
+pub fn held_above_floor(label: &str, estimate: MeanEstimate, z: f64, abs_floor: f64) -> f64 {
     if z * estimate.se <= abs_floor {
         estimate.se
     } else {
@@ -114,9 +119,10 @@ pub fn assert_mean_matches(
     let z = z_two_sided(alpha);
     let half = z * held_above_floor(label, estimate, z, abs_floor) + abs_floor;
     eprintln!(
-        "{label}: {:.6} (se {:.2e}) vs {expected:.6}: {:+.2} se",
+        "{label}: {:.6} (se {:.2e}, variance known to {:.0} %) vs {expected:.6}: {:+.2} se",
         estimate.mean,
         estimate.se,
+        100.0 * estimate.variance_error,
         (estimate.mean - expected) / estimate.se
     );
     assert!(
@@ -154,9 +160,11 @@ pub fn assert_means_agree_within(
     );
     let se = (held_a * held_a + held_b * held_b).sqrt();
     eprintln!(
-        "{label}: {:.6} vs {:.6}: {:+.2} se",
+        "{label}: {:.6} vs {:.6} (variances known to {:.0} % and {:.0} %): {:+.2} se",
         a.mean,
         b.mean,
+        100.0 * a.variance_error,
+        100.0 * b.variance_error,
         (a.mean - b.mean) / se
     );
     assert!(
