@@ -14,8 +14,9 @@ use pathtracer::lights::{Light as SampledLight, LightConvention, LightPdf};
 use pathtracer::materials::{Conductor, Diffuse, MicrofacetSampling};
 use pathtracer::math::distribution::Distribution2D;
 use pathtracer::math::warp::{
-    cosine_hemisphere_pdf, sample_cosine_hemisphere, sample_uniform_hemisphere,
-    sample_uniform_sphere, uniform_hemisphere_pdf, uniform_sphere_pdf,
+    cosine_hemisphere_pdf, sample_cosine_hemisphere, sample_uniform_cone,
+    sample_uniform_hemisphere, sample_uniform_sphere, uniform_cone_pdf, uniform_hemisphere_pdf,
+    uniform_sphere_pdf,
 };
 use pathtracer::math::Frame;
 use pathtracer::scene::{Light, Material, Scene};
@@ -77,6 +78,10 @@ fn light_family(name: &str, light: Light, p: Vec3) -> Family {
         lossy: false,
     }
 }
+
+/// `1 - cos(40 degrees)`: the cone of the cone family (the caustic
+/// casters' sampler, `src/world/casters/cone.rs`).
+const CONE_ONE_MINUS_COS: f32 = 0.233_955_55;
 
 /// A warp of the unit square to directions around +Z with its density,
 /// which vanishes below `cos_min`.
@@ -340,6 +345,18 @@ pub fn families() -> Vec<Family> {
             sample_cosine_hemisphere,
             cosine_hemisphere_pdf,
             0.0,
+        ),
+        warp_family(
+            "uniform cone of half-angle 40 degrees",
+            |u| sample_uniform_cone(u, CONE_ONE_MINUS_COS),
+            |w| {
+                if w.z >= 1.0 - CONE_ONE_MINUS_COS {
+                    uniform_cone_pdf(CONE_ONE_MINUS_COS)
+                } else {
+                    0.0
+                }
+            },
+            1.0 - CONE_ONE_MINUS_COS as f64,
         ),
         warp_family(
             "uniform sphere",
