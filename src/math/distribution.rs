@@ -301,6 +301,30 @@ mod tests {
         }
     }
 
+    /// Each guide entry is the cell of `u = k / n`: the last cell whose
+    /// cdf is at most `k / n`. A wrong guide still finds the right cell,
+    /// since the search walks from it, only more slowly, so no test of
+    /// the samples can see it; this one reads the table.
+    #[test]
+    fn the_guide_holds_the_cell_of_each_k_over_n() {
+        let functions: [Vec<f32>; 4] = [
+            vec![1.0],
+            vec![0.0, 0.0, 5.0, 1.0],
+            vec![1e4, 1.0, 1.0, 1.0, 0.0, 2.0],
+            (0..100).map(|i| (i % 7) as f32).collect(),
+        ];
+        for f in functions {
+            let d = Distribution1D::new(&f);
+            let n = f.len();
+            assert_eq!(d.guide.len(), n);
+            for (k, &guide) in d.guide.iter().enumerate() {
+                let u = k as f32 / n as f32;
+                let cell = (0..n).rev().find(|&i| d.cdf[i] <= u).unwrap();
+                assert_eq!(guide as usize, cell, "n {n}, k {k}");
+            }
+        }
+    }
+
     fn next_down(c: f32) -> f32 {
         crate::math::float::next_float_down(c).max(0.0)
     }
