@@ -3,13 +3,21 @@
 //! ([`CourseExact::render`]), with or without a catalogued mistake.
 //!
 //! Every check renders at [`SIZE`] with a few samples per pixel (the
-//! decision reads 16 x 16 pixel blocks), fewer than 32,
-//! so that adaptive sampling, on by default in a binary whose part 5 is
-//! written, never stops a pixel (its test runs every 32 samples).
+//! decision reads 16 x 16 pixel blocks). The checks of parts 3 and 4 take
+//! fewer than 32, so that adaptive sampling, on by default in a binary
+//! whose part 5 is written, never stops a pixel (its test runs every 32
+//! samples). Part 5's sets `-a` itself: a batch of 2 and a tolerance of
+//! 0.2 at `-s 8`, so that its test runs at 2, 4 and 6 samples and stops
+//! about half the pixels of the box at one of them (where a mistake of
+//! part 5 moves the most pixels), a quarter of a second a render on 2
+//! cores; the reference writes the rate image as the course does
+//! ([`super::rates`]).
 
 use std::collections::HashMap;
 use std::sync::Mutex;
 
+use super::rates;
+use crate::adaptive::Adaptive;
 use crate::bvh::WideBvhAccel;
 use crate::course::{
     Assignment, CourseExact, CourseSampling, CourseView, Lamps, StarterDirect, StarterTracer,
@@ -44,6 +52,9 @@ pub struct Check {
     pub accumulate: bool,
     /// `-s`.
     pub spp: u32,
+    /// `-a BATCH TOL`, and the rate image read back; `None`: no `-a` (the
+    /// binary's default, which stops no pixel below 32 samples).
+    pub adaptive: Option<Adaptive>,
 }
 
 /// The battery: the checks of `parts` (all written parts when empty).
@@ -57,6 +68,7 @@ pub fn battery(parts: &[u8]) -> Vec<Check> {
         max_depth: 1,
         accumulate: true,
         spp: 16,
+        adaptive: None,
     };
     let all = [
         direct,
@@ -87,6 +99,18 @@ pub fn battery(parts: &[u8]) -> Vec<Check> {
             spp: 4,
             ..direct
         },
+        Check {
+            part: 5,
+            name: "adaptive sampling, rate image (-s 8 -a 2 0.2)",
+            function: "PathTracer::raytrace_pixel",
+            hemisphere: false,
+            spp: 8,
+            adaptive: Some(Adaptive {
+                batch: 2,
+                tolerance: 0.2,
+            }),
+            ..direct
+        },
     ];
     all.into_iter()
         .filter(|c| parts.is_empty() || parts.contains(&c.part))
@@ -115,21 +139,40 @@ impl Check {
         if !self.accumulate {
             flags.extend(["-o".to_string(), "0".to_string()]);
         }
+        if let Some(a) = self.adaptive {
+            flags.extend([
+                "-a".to_string(),
+                a.batch.to_string(),
+                a.tolerance.to_string(),
+            ]);
+        }
         flags
     }
 
     /// The mistakes that can show in this check: those of its part and of
-    /// the parts before it, which every render goes through (part 5's
-    /// change nothing below 32 samples).
+    /// the parts before it, which every render goes through; part 5's only
+    /// where the check sets `-a` (they change nothing below 32 samples
+    /// otherwise).
     pub fn suspects(&self) -> Vec<Mistake> {
         Mistake::ALL
             .into_iter()
             .filter(|m| {
                 let part = m.info().part;
-                part <= self.part && part != 5
+                part <= self.part && (part != 5 || self.adaptive.is_some())
             })
             .collect()
     }
+}
+
+/// One render of a check as the course's binary writes it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Render {
+    /// The PNG's 8-bit values, three a pixel.
+    pub image: Vec<u8>,
+    /// Per pixel, the sample fraction `n / ns_aa` its rate image holds
+    /// (through the PNG's colours and 8 bits, [`rates`]), when the check
+    /// sets `-a`.
+    pub rates: Option<Vec<f64>>,
 }
 
 /// A scene ready for the course's renderer at [`SIZE`].
@@ -139,7 +182,7 @@ pub struct Stage {
     accel: WideBvhAccel,
     /// The images rendered so far, when the stage keeps them
     /// ([`Stage::remembering`]), by check, mistakes and seed.
-    kept: Option<Mutex<HashMap<String, Vec<u8>>>>,
+    kept: Option<Mutex<HashMap<String, Render>>>,
 }
 
 impl Stage {
@@ -165,25 +208,25 @@ impl Stage {
         }
     }
 
-    /// The 8-bit image a correct course solution (with `mistakes`) renders
-    /// for `check` with `seed`, as its PNG holds it (three bytes a pixel).
-    /// The image does not depend on `threads`.
-    pub fn render(&self, check: &Check, mistakes: Mistakes, seed: u64, threads: usize) -> Vec<u8> {
+    /// What a correct course solution (with `mistakes`) writes for
+    /// `check` with `seed`: its PNG's values and, with `-a`, its rate
+    /// image's fractions. Neither depends on `threads`.
+    pub fn render(&self, check: &Check, mistakes: Mistakes, seed: u64, threads: usize) -> Render {
         let Some(kept) = &self.kept else {
             return self.render_anew(check, mistakes, seed, threads);
         };
         let key = format!("{check:?} {mistakes:?} {seed}");
-        if let Some(image) = kept.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
-            return image.clone();
+        if let Some(render) = kept.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
+            return render.clone();
         }
-        let image = self.render_anew(check, mistakes, seed, threads);
+        let render = self.render_anew(check, mistakes, seed, threads);
         kept.lock()
             .unwrap_or_else(|e| e.into_inner())
-            .insert(key, image.clone());
-        image
+            .insert(key, render.clone());
+        render
     }
 
-    fn render_anew(&self, check: &Check, mistakes: Mistakes, seed: u64, threads: usize) -> Vec<u8> {
+    fn render_anew(&self, check: &Check, mistakes: Mistakes, seed: u64, threads: usize) -> Render {
         let exact = CourseExact {
             assignment: Assignment::PathTracer1,
         };
@@ -210,10 +253,21 @@ impl Stage {
                 sampler: SamplerKind::Independent,
                 progress: false,
             },
-            adaptive: None,
+            adaptive: check.adaptive,
         };
         let rendered = exact.render(view, &self.accel, &tracer, &sampling);
         let display: Vec<Rgb> = rendered.film.pixels.iter().map(|&p| tone_map(p)).collect();
-        quantize_display(&display, exact.quantization())
+        let rates = check.adaptive.map(|_| {
+            let taken: Vec<f64> = rendered
+                .estimates
+                .iter()
+                .map(|e| e.samples as f64 / check.spp.max(1) as f64)
+                .collect();
+            rates::fractions(&rates::rate_image(&taken))
+        });
+        Render {
+            image: quantize_display(&display, exact.quantization()),
+            rates,
+        }
     }
 }

@@ -9,6 +9,8 @@
 //!   course's renders of them;
 //! - [`stats`]: the decision, against the distribution of a correct
 //!   solution's images (false alarms at most [`ALPHA`] per battery);
+//! - [`rates`]: part 5's sample-rate image (`NAME_rate.png`) read back
+//!   as the fraction of samples each pixel took, `r = (1 + R - B) / 2`;
 //! - [`verdict`]: what differs and where, and which mistakes fit;
 //! - [`report`]: `report.html`, one self-contained page.
 //!
@@ -18,6 +20,7 @@
 //! ([`crate::scene::export_scene`]) into the output folder.
 
 pub mod battery;
+pub mod rates;
 pub mod report;
 pub mod stats;
 pub mod student;
@@ -32,7 +35,8 @@ pub use student::{Capabilities, RunError, Student};
 pub use verdict::{judge, CheckImages, CheckResult, Outcome, Suspect};
 
 /// The chance that a correct renderer fails one or more checks of a full
-/// battery: each of its `n` checks is decided at `ALPHA / n`.
+/// battery: each of its `n` checks is decided at `ALPHA / n` (a check
+/// with `-a` splits that again between its image and its rate image).
 pub const ALPHA: f64 = 0.01;
 
 /// The course scene the checks prefer.

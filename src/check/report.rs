@@ -1,8 +1,9 @@
 //! `report.html`: one self-contained page (every image inlined as a PNG
 //! data URI; no server, no network), readable offline. For each check: the
 //! verdict, what differs, the student's image beside the reference and
-//! the ratio of the two as a heat map with its colour bar, and the named
-//! mistakes with their images at the same flags. The markup is well-formed
+//! the ratio of the two as a heat map with its colour bar (and for a
+//! check with `-a` the same three of the sample-rate images), and the
+//! named mistakes with their images at the same flags. The markup is well-formed
 //! XML too, so a test can read it without a browser.
 
 use std::fmt::Write as _;
@@ -102,7 +103,7 @@ fn section(i: usize, r: &CheckResult) -> String {
             statistic,
             threshold,
         } => {
-            let _ = write!(html, "<p>Within the noise of a correct solution: statistic {statistic:.1}, threshold {threshold:.1}.</p>");
+            let _ = write!(html, "<p>Within the noise of a correct solution: the image's statistic {statistic:.1}, threshold {threshold:.1}.</p>");
         }
         Outcome::Fail {
             statistic,
@@ -112,7 +113,7 @@ fn section(i: usize, r: &CheckResult) -> String {
         } => {
             let _ = write!(
                 html,
-                "<p>{}. Statistic {statistic:.1}, threshold {threshold:.1}.</p>",
+                "<p>{}. The image's statistic {statistic:.1}, threshold {threshold:.1}.</p>",
                 escape(what)
             );
         }
@@ -153,8 +154,31 @@ fn section(i: usize, r: &CheckResult) -> String {
 
 fn figures(images: &CheckImages) -> String {
     let (w, h, ratio) = ratio_map(&images.ratio);
+    let rates = images.rates.as_ref().map_or(String::new(), |r| {
+        let (w, h, ratio) = ratio_map(&r.ratio);
+        format!(
+            r#"<p>The sample-rate images (blue: few of the samples, green: half, red: all): yours took {:.1} % of the samples on average, a correct solution's {:.1} %. Statistic {:.1}, threshold {:.1}.</p><div class="row">{}{}{}</div>"#,
+            100.0 * r.student_mean,
+            100.0 * r.reference_mean,
+            r.statistic,
+            r.threshold,
+            figure("your rate image", SIZE.0, SIZE.1, &r.student),
+            figure(
+                "a correct solution's (mean of 8 renders' rates)",
+                SIZE.0,
+                SIZE.1,
+                &r.reference
+            ),
+            figure(
+                "your rates / correct: blue 1/4, white 1, red 4",
+                w,
+                h,
+                &ratio
+            )
+        )
+    });
     format!(
-        r#"<div class="row">{}{}{}</div>"#,
+        r#"<div class="row">{}{}{}</div>{rates}"#,
         figure("your image", SIZE.0, SIZE.1, &images.student),
         figure(
             "a correct solution's (mean of 8 renders)",

@@ -53,61 +53,90 @@ pub fn block_index(x: u32, y: u32, width: u32) -> usize {
 
 /// Per cell, the block mean of `rgb` (8-bit, three channels), in `[0, 1]`.
 pub fn cells(width: u32, height: u32, rgb: &[u8]) -> Vec<f64> {
+    block_means(width, height, 3, &display_values(rgb))
+}
+
+/// 8-bit values as display values in `[0, 1]`.
+pub fn display_values(rgb: &[u8]) -> Vec<f64> {
+    rgb.iter().map(|&v| v as f64 / 255.0).collect()
+}
+
+/// Per cell (block and channel), the block mean of `values` (`channels`
+/// a pixel, row-major).
+pub fn block_means(width: u32, height: u32, channels: usize, values: &[f64]) -> Vec<f64> {
     let (bw, bh) = (width.div_ceil(BLOCK), height.div_ceil(BLOCK));
-    let mut sums = vec![0.0; (bw * bh * 3) as usize];
+    let mut sums = vec![0.0; (bw * bh) as usize * channels];
     let mut counts = vec![0.0; (bw * bh) as usize];
     for y in 0..height {
         for x in 0..width {
             let b = block_index(x, y, width);
             counts[b] += 1.0;
-            for c in 0..3 {
-                sums[3 * b + c] += rgb[3 * (y * width + x) as usize + c] as f64 / 255.0;
+            let pixel = (y * width + x) as usize * channels;
+            for c in 0..channels {
+                sums[channels * b + c] += values[pixel + c];
             }
         }
     }
     sums.iter()
         .enumerate()
-        .map(|(i, s)| s / counts[i / 3])
+        .map(|(i, s)| s / counts[i / channels])
         .collect()
 }
+
+/// The variance of one 8-bit value's rounding, `(1/255)^2 / 12`: the
+/// least a display value varies by.
+pub const DISPLAY_ROUNDING: f64 = 1.0 / (255.0 * 255.0 * 12.0);
 
 impl NullModel {
     /// The model of `renders` (8-bit images of `width` x `height`).
     pub fn new(width: u32, height: u32, renders: &[Vec<u8>]) -> Self {
+        let values: Vec<Vec<f64>> = renders.iter().map(|r| display_values(r)).collect();
+        Self::of_values(width, height, 3, &values, DISPLAY_ROUNDING)
+    }
+
+    /// The model of `renders`, each `channels` values a pixel, where no
+    /// value varies by less than `rounding` (a variance: that of the
+    /// quantisation the values went through).
+    pub fn of_values(
+        width: u32,
+        height: u32,
+        channels: usize,
+        renders: &[Vec<f64>],
+        rounding: f64,
+    ) -> Self {
         let k = renders.len();
         assert!(k >= 2, "a null model needs two renders or more");
-        let n = (width * height * 3) as usize;
-        // Per pixel channel: mean and variance over the renders.
+        let n = (width * height) as usize * channels;
+        // Per pixel channel: the variance over the renders.
         let mut pixel_var = vec![0.0; n];
         for (i, v) in pixel_var.iter_mut().enumerate() {
-            let values = renders.iter().map(|r| r[i] as f64 / 255.0);
+            let values = renders.iter().map(|r| r[i]);
             let mean = values.clone().sum::<f64>() / k as f64;
             *v = values.map(|x| (x - mean) * (x - mean)).sum::<f64>() / (k - 1) as f64;
         }
-        let per_render: Vec<Vec<f64>> = renders.iter().map(|r| cells(width, height, r)).collect();
+        let per_render: Vec<Vec<f64>> = renders
+            .iter()
+            .map(|r| block_means(width, height, channels, r))
+            .collect();
         let c = per_render[0].len();
         let mean = (0..c)
             .map(|i| per_render.iter().map(|r| r[i]).sum::<f64>() / k as f64)
             .collect();
-        // sum of the pixels' variances over n^2, per cell.
-        let mut variance = vec![0.0; c];
-        let mut counts = vec![0.0; c];
+        // The sum of the pixels' variances over n^2, per cell, each pixel's
+        // at least `rounding`, so that a cell no render varies in (black,
+        // or clipped white) still has a finite scale: the block mean of
+        // the variances over the block's n pixels.
+        let mut pixels = vec![0.0; c / channels];
         for y in 0..height {
             for x in 0..width {
-                let b = block_index(x, y, width);
-                for ch in 0..3 {
-                    variance[3 * b + ch] += pixel_var[3 * (y * width + x) as usize + ch];
-                    counts[3 * b + ch] += 1.0;
-                }
+                pixels[block_index(x, y, width)] += 1.0;
             }
         }
-        // A floor: the 8-bit rounding of every pixel, (1/255)^2 / 12 each,
-        // so that a cell no render varies in (black, or clipped white)
-        // still has a finite scale.
-        let rounding = (1.0f64 / 255.0).powi(2) / 12.0;
-        for (v, n) in variance.iter_mut().zip(&counts) {
-            *v = (*v + n * rounding) / (n * n);
-        }
+        let variance = block_means(width, height, channels, &pixel_var)
+            .iter()
+            .enumerate()
+            .map(|(i, v)| (v + rounding) / pixels[i / channels])
+            .collect();
         NullModel {
             width,
             height,

@@ -9,6 +9,8 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
+use crate::render::rendered::rate_image_path;
+
 /// A student's `pathtracer` binary.
 #[derive(Clone, Debug)]
 pub struct Student {
@@ -20,11 +22,15 @@ pub struct Student {
 }
 
 /// What the binary says it supports (from `-h`, whose usage lists the
-/// flags; a binary that prints nothing is assumed to have the 2023 set).
+/// flags; a binary that prints nothing is assumed to have the 2023 set,
+/// `-a` and no `-o`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Capabilities {
     /// `-o 0|1` (later years only).
     pub accumulate_flag: bool,
+    /// `-a BATCH TOL` (adaptive sampling): a usage that lists `-s` but
+    /// not `-a` is of a year without it.
+    pub adaptive_flag: bool,
 }
 
 /// Why a run gave no image to compare.
@@ -130,6 +136,7 @@ impl Student {
         };
         Ok(Capabilities {
             accumulate_flag: says("-o"),
+            adaptive_flag: says("-a") || !says("-s"),
         })
     }
 
@@ -143,6 +150,7 @@ impl Student {
     ) -> Result<StudentImage, RunError> {
         let path = self.work.join(image);
         let _ = std::fs::remove_file(&path);
+        let _ = std::fs::remove_file(rate_image_path(&path));
         let mut all = vec!["-f".to_string(), image.to_string()];
         all.extend_from_slice(args);
         let output = self.run(&all)?;
@@ -160,6 +168,18 @@ impl Student {
             )));
         }
         read_png(&path, size)
+    }
+
+    /// The rate image the last [`Student::render`] into `image` wrote
+    /// beside it (`NAME_rate.png`), which must be `size`; `None` when it
+    /// wrote none.
+    pub fn rate_image(
+        &self,
+        image: &str,
+        size: (u32, u32),
+    ) -> Option<Result<StudentImage, RunError>> {
+        let path = rate_image_path(&self.work.join(image));
+        path.exists().then(|| read_png(&path, size))
     }
 }
 

@@ -1,9 +1,11 @@
 //! One check, decided: the student's render against the null model
 //! ([`super::stats`]), what differs and where, and the catalogued mistakes
-//! whose images fit it, best first.
+//! whose images fit it, best first. A check with `-a` also holds the
+//! student's rate image against the null renders' ([`super::rates`]).
 
-use super::battery::{Check, Stage, SIZE};
-use super::stats::{self, chi_square_quantile, student_cells, NullModel, BLOCK};
+use super::battery::{Check, Render, Stage, SIZE};
+use super::rates;
+use super::stats::{self, chi_square_quantile, NullModel, BLOCK};
 use super::student::{Capabilities, Student};
 use crate::math::{luminance, Rgb};
 use crate::mistakes::{Mistake, Mistakes};
@@ -84,13 +86,102 @@ pub struct CheckImages {
     pub ratio: Vec<f64>,
     /// The best suspects' images (a render of each), best first.
     pub suspects: Vec<(Mistake, Vec<u8>)>,
+    /// The rate images, for a check with `-a`.
+    pub rates: Option<RateImages>,
+}
+
+/// The sample-rate images of a check with `-a`, and their verdict.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RateImages {
+    /// The student's `check_rate.png` as it wrote it.
+    pub student: Vec<u8>,
+    /// The course's colours of the null renders' mean fraction per pixel.
+    pub reference: Vec<u8>,
+    /// Per block, the student's mean fraction over the reference's.
+    pub ratio: Vec<f64>,
+    /// The mean fraction of samples taken, the student's and the reference's.
+    pub student_mean: f64,
+    pub reference_mean: f64,
+    /// [`stats::statistic`] of the rate cells and its threshold.
+    pub statistic: f64,
+    pub threshold: f64,
 }
 
 /// How many suspects the report shows.
 pub const SHOWN_SUSPECTS: usize = 3;
 
+/// What a check compares: the image's display values, three a pixel, and
+/// with `-a` the rate image's fractions, one a pixel ([`rates`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Plane {
+    Image,
+    Rates,
+}
+
+impl Plane {
+    /// The planes of `check`.
+    fn of(check: &Check) -> &'static [Plane] {
+        match check.adaptive {
+            Some(_) => &[Plane::Image, Plane::Rates],
+            None => &[Plane::Image],
+        }
+    }
+
+    /// The null model of `renders` in this plane.
+    fn model(self, renders: &[Render]) -> NullModel {
+        match self {
+            Plane::Image => {
+                let images: Vec<Vec<u8>> = renders.iter().map(|r| r.image.clone()).collect();
+                NullModel::new(SIZE.0, SIZE.1, &images)
+            }
+            Plane::Rates => {
+                let fractions: Vec<Vec<f64>> =
+                    renders.iter().filter_map(|r| r.rates.clone()).collect();
+                NullModel::of_values(SIZE.0, SIZE.1, 1, &fractions, rates::RATE_ROUNDING)
+            }
+        }
+    }
+
+    /// The cells of `render` in this plane.
+    fn cells(self, render: &Render) -> Vec<f64> {
+        match (self, &render.rates) {
+            (Plane::Image, _) => stats::cells(SIZE.0, SIZE.1, &render.image),
+            (Plane::Rates, Some(f)) => stats::block_means(SIZE.0, SIZE.1, 1, f),
+            (Plane::Rates, None) => Vec::new(),
+        }
+    }
+}
+
+/// One plane decided: the cells, their z against the model, the statistic.
+struct Decided {
+    x: Vec<f64>,
+    z: Vec<f64>,
+    statistic: f64,
+    threshold: f64,
+}
+
+impl Decided {
+    fn new(x: Vec<f64>, model: &NullModel, alpha: f64) -> Self {
+        let z = model.z_scores(&x);
+        Decided {
+            statistic: stats::statistic(&z),
+            threshold: chi_square_quantile(x.len() as f64, alpha),
+            x,
+            z,
+        }
+    }
+
+    fn passes(&self) -> bool {
+        self.statistic <= self.threshold
+    }
+}
+
 /// Runs `check` with `student` on the scene file `scene_file` (which
-/// `stage` holds loaded) and decides it at false-alarm rate `alpha`.
+/// `stage` holds loaded) and decides it at false-alarm rate `alpha`. A
+/// check with `-a` decides the image and the rate image each at
+/// `alpha / 2` (Bonferroni: they are not independent) and fails when
+/// either fails; its outcome's statistic is the image's, the rate
+/// image's is in [`RateImages`].
 pub fn judge(
     check: &Check,
     student: &Student,
@@ -108,27 +199,70 @@ pub fn judge(
     if !check.accumulate && !capabilities.accumulate_flag {
         return result(Outcome::Skipped("the binary has no -o".into()));
     }
+    if check.adaptive.is_some() && !capabilities.adaptive_flag {
+        return result(Outcome::Skipped(
+            "the binary has no -a (adaptive sampling)".into(),
+        ));
+    }
     let mut args = check.flags(threads);
     args.push(scene_file.to_string());
     let image = match student.render(&args, "check.png", SIZE) {
         Ok(image) => image,
         Err(e) => return result(Outcome::Error(e.to_string())),
     };
-    let x = student_cells(&image);
-    let renders: Vec<Vec<u8>> = (0..NULL_RENDERS as u64)
+    let mut written = Render {
+        image: image.rgb,
+        rates: None,
+    };
+    let mut rate_png = Vec::new();
+    if check.adaptive.is_some() {
+        match student.rate_image("check.png", SIZE) {
+            None => {
+                return result(Outcome::Skipped(
+                    "it wrote check.png but no check_rate.png beside it (a year without the rate image?)".into(),
+                ))
+            }
+            Some(Err(e)) => return result(Outcome::Error(format!("check_rate.png: {e}"))),
+            Some(Ok(rate)) => {
+                written.rates = Some(rates::fractions(&rate.rgb));
+                rate_png = rate.rgb;
+            }
+        }
+    }
+    let renders: Vec<Render> = (0..NULL_RENDERS as u64)
         .map(|seed| stage.render(check, Mistakes::NONE, 1000 + seed, threads))
         .collect();
-    let model = NullModel::new(SIZE.0, SIZE.1, &renders);
+    let planes = Plane::of(check);
+    let alpha = alpha / planes.len() as f64;
+    let models: Vec<NullModel> = planes.iter().map(|p| p.model(&renders)).collect();
+    let decided: Vec<Decided> = planes
+        .iter()
+        .zip(&models)
+        .map(|(p, m)| Decided::new(p.cells(&written), m, alpha))
+        .collect();
+    let images_of: Vec<Vec<u8>> = renders.iter().map(|r| r.image.clone()).collect();
     let mut images = CheckImages {
-        reference: mean_image(&renders),
-        ratio: block_ratios(&x, &model.mean),
-        student: image.rgb,
+        reference: mean_image(&images_of),
+        ratio: block_ratios(&decided[0].x, &models[0].mean),
+        student: written.image.clone(),
         suspects: Vec::new(),
+        rates: decided.get(1).zip(models.get(1)).map(|(d, m)| RateImages {
+            student: rate_png,
+            reference: rates::rate_image(&mean_fractions(&renders)),
+            ratio: d
+                .x
+                .iter()
+                .zip(&m.mean)
+                .map(|(x, mu)| if *mu > 0.0 { x / mu } else { 1.0 })
+                .collect(),
+            student_mean: rates::mean(written.rates.as_deref().unwrap_or_default()),
+            reference_mean: rates::mean(&mean_fractions(&renders)),
+            statistic: d.statistic,
+            threshold: d.threshold,
+        }),
     };
-    let threshold = chi_square_quantile(x.len() as f64, alpha);
-    let z = model.z_scores(&x);
-    let statistic = stats::statistic(&z);
-    if statistic <= threshold {
+    let (statistic, threshold) = (decided[0].statistic, decided[0].threshold);
+    if decided.iter().all(Decided::passes) {
         return CheckResult {
             images: Some(images),
             ..result(Outcome::Pass {
@@ -137,21 +271,28 @@ pub fn judge(
             })
         };
     }
+    let cells: usize = decided.iter().map(|d| d.x.len()).sum();
     let mut suspects: Vec<(Suspect, Vec<u8>)> = check
         .suspects()
         .into_iter()
         .map(|mistake| {
-            let renders: Vec<Vec<u8>> = (0..SUSPECT_RENDERS as u64)
+            let renders: Vec<Render> = (0..SUSPECT_RENDERS as u64)
                 .map(|seed| stage.render(check, Mistakes::of(&[mistake]), 2000 + seed, threads))
                 .collect();
-            let wrong = NullModel::new(SIZE.0, SIZE.1, &renders).widened(&model);
-            let s = stats::statistic(&wrong.z_scores(&x));
+            let (mut sum, mut fits) = (0.0, true);
+            for ((plane, model), d) in planes.iter().zip(&models).zip(&decided) {
+                let wrong = plane.model(&renders).widened(model);
+                let s = stats::statistic(&wrong.z_scores(&d.x));
+                sum += s;
+                fits &= s <= d.threshold;
+            }
             let suspect = Suspect {
                 mistake,
-                misfit: s / x.len() as f64,
-                fits: s <= threshold,
+                misfit: sum / cells as f64,
+                fits,
             };
-            (suspect, renders.into_iter().next().unwrap_or_default())
+            let image = renders.into_iter().next().map(|r| r.image);
+            (suspect, image.unwrap_or_default())
         })
         .collect();
     suspects.sort_by(|a, b| a.0.misfit.total_cmp(&b.0.misfit));
@@ -160,15 +301,50 @@ pub fn judge(
         .take(SHOWN_SUSPECTS)
         .map(|(s, image)| (s.mistake, image.clone()))
         .collect();
+    let what = describe_planes(&decided, &models, check.spp);
     CheckResult {
         images: Some(images),
         ..result(Outcome::Fail {
             statistic,
             threshold,
-            what: describe(&x, &model.mean, &z),
+            what,
             suspects: suspects.into_iter().map(|(s, _)| s).collect(),
         })
     }
+}
+
+/// Per pixel, the mean fraction of samples over `renders`' rate images.
+fn mean_fractions(renders: &[Render]) -> Vec<f64> {
+    let all: Vec<&Vec<f64>> = renders.iter().filter_map(|r| r.rates.as_ref()).collect();
+    let n = all.len().max(1) as f64;
+    (0..all.first().map_or(0, |f| f.len()))
+        .map(|i| all.iter().map(|f| f[i]).sum::<f64>() / n)
+        .collect()
+}
+
+/// What differs in each plane that failed, in words.
+fn describe_planes(decided: &[Decided], models: &[NullModel], spp: u32) -> String {
+    let mut parts = Vec::new();
+    for (i, (d, m)) in decided.iter().zip(models).enumerate() {
+        if d.passes() {
+            continue;
+        }
+        parts.push(if i == 0 {
+            describe(&d.x, &m.mean, &d.z)
+        } else {
+            let (share, place) = differing_blocks(&d.z, 1);
+            format!(
+                "the rate image: your pixels took {:.0} % of the {spp} samples on average, a correct solution's {:.0} %; {:.0} % of the blocks differ, {place}",
+                100.0 * rates::mean(&d.x),
+                100.0 * rates::mean(&m.mean),
+                100.0 * share
+            )
+        });
+    }
+    if decided.len() > 1 && decided[0].passes() {
+        parts.insert(0, "the image is within the noise".into());
+    }
+    parts.join("; ")
 }
 
 /// The per-value mean of 8-bit images.
@@ -200,13 +376,24 @@ fn describe(x: &[f64], mean: &[f64], z: &[f64]) -> String {
     } else {
         f64::INFINITY
     };
+    let (share, place) = differing_blocks(z, 3);
+    format!(
+        "{:.2} times as bright as the course's image (radiance); {:.0} % of the 16 x 16 blocks differ, {place}",
+        ratio,
+        100.0 * share
+    )
+}
+
+/// The share of cells (`channels` a block) more than 4 standard errors
+/// off, and where they lie, in words.
+fn differing_blocks(z: &[f64], channels: usize) -> (f64, String) {
     let bw = SIZE.0.div_ceil(BLOCK) as usize;
     let bh = SIZE.1.div_ceil(BLOCK) as usize;
     let far: Vec<usize> = (0..z.len()).filter(|&i| z[i] > 4.0).collect();
-    let share = far.len() as f64 / z.len() as f64;
+    let share = far.len() as f64 / z.len().max(1) as f64;
     let (mut cx, mut cy) = (0.0, 0.0);
     for &i in &far {
-        let b = i / 3;
+        let b = i / channels;
         cx += (b % bw) as f64 / bw as f64;
         cy += (b / bw) as f64 / bh as f64;
     }
@@ -224,9 +411,5 @@ fn describe(x: &[f64], mean: &[f64], z: &[f64]) -> String {
             third(cx, ["left", "centre", "right"])
         )
     };
-    format!(
-        "{:.2} times as bright as the course's image (radiance); {:.0} % of the 16 x 16 blocks differ, {place}",
-        ratio,
-        100.0 * share
-    )
+    (share, place)
 }
