@@ -329,6 +329,24 @@ mod tests {
         crate::math::float::next_float_down(c).max(0.0)
     }
 
+    /// Negative and non-finite values count as 0 beside positive ones;
+    /// the integral is the function's mean (here not 1); `u = 1` and
+    /// `x = 1` belong to the last cell (with mass, for `u`).
+    #[test]
+    fn empty_values_and_the_ends_of_the_range() {
+        let d = Distribution1D::new(&[-1.0, 3.0, f32::NAN, 7.0, f32::INFINITY, 0.0]);
+        assert!(!d.is_empty());
+        assert_eq!(d.len(), 6);
+        assert!((d.integral() - 10.0 / 6.0).abs() < 1e-6);
+        assert_eq!(d.cdf(), &[0.0, 0.0, 0.3, 0.3, 1.0, 1.0, 1.0]);
+        let end = d.sample(1.0);
+        assert_eq!(end.cell, 3);
+        assert!(end.x < 1.0 && (end.x - 4.0 / 6.0).abs() < 1e-6);
+        assert!((end.pdf - 4.2).abs() < 1e-5);
+        assert_eq!(d.pdf(1.0), 0.0);
+        assert_eq!(d.invert(1.0), 1.0);
+    }
+
     #[test]
     fn a_function_without_mass_is_uniform() {
         for f in [[0.0, 0.0], [-1.0, f32::NAN], [f32::INFINITY, 0.0]] {
@@ -342,6 +360,7 @@ mod tests {
     #[test]
     fn two_dimensions_sample_rows_then_columns() {
         let d = Distribution2D::new(&[0.0, 1.0, 2.0, 1.0, 0.0, 0.0], 3, 2);
+        assert_eq!((d.width(), d.height()), (3, 2));
         // Row 0 has 3/4 of the mass, row 1 a quarter; p = f / c with c = 4/6.
         assert!((d.pdf(Vec2::new(0.5, 0.2)) - 1.5).abs() < 1e-6);
         assert!((d.pdf(Vec2::new(0.9, 0.2)) - 3.0).abs() < 1e-6);
