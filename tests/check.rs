@@ -142,6 +142,7 @@ fn a_broken_binary_gets_a_clear_line() {
     let caps = Capabilities {
         accumulate_flag: true,
         adaptive_flag: true,
+        lens_flag: true,
     };
     for (binary, says) in cases {
         let student = bench.student(binary.clone(), Duration::from_secs(60));
@@ -173,6 +174,7 @@ fn a_broken_binary_gets_a_clear_line() {
     let caps = Capabilities {
         accumulate_flag: false,
         adaptive_flag: true,
+        lens_flag: true,
     };
     let r = judge(&no_o, &hang, caps, &bench.scene_file, bench.stage, 1e-3, 2);
     assert!(matches!(&r.outcome, Outcome::Skipped(why) if why.contains("-o")));

@@ -12,25 +12,27 @@
 //! - [`rates`]: part 5's sample-rate image (`NAME_rate.png`) read back
 //!   as the fraction of samples each pixel took, `r = (1 + R - B) / 2`;
 //! - [`verdict`]: what differs and where, and which mistakes fit;
-//! - [`report`]: `report.html`, one self-contained page.
-//!
-//! The scene is the course's `CBspheres_lambertian.dae` where one is found
-//! (`--scenes DIR`, else `CS184_SCENES`), else the project's own Cornell
-//! box written in the course's dialect
-//! ([`crate::scene::export_scene`]) into the output folder.
+//! - [`report`]: `report.html`, one self-contained page;
+//! - [`scenes`]: the scenes the checks render: the course's
+//!   `CBspheres_lambertian.dae` where one is found (`--scenes DIR`, else
+//!   `CS184_SCENES`), else the project's own Cornell box; for part 6 a box
+//!   of mirror and glass of the project's; each written in the course's
+//!   dialect ([`crate::scene::export_scene`]) into the output folder.
 
 pub mod battery;
 pub mod rates;
 pub mod report;
+pub mod scenes;
 pub mod stats;
 pub mod student;
 pub mod verdict;
 
 use std::path::{Path, PathBuf};
 
-use crate::scene::{self, builtin, Scene};
+use crate::scene::Scene;
 
 pub use battery::{battery, Check, Stage};
+pub use scenes::{CheckScene, COURSE_SCENE};
 pub use student::{Capabilities, RunError, Student};
 pub use verdict::{judge, CheckImages, CheckResult, Outcome, Suspect};
 
@@ -39,30 +41,10 @@ pub use verdict::{judge, CheckImages, CheckResult, Outcome, Suspect};
 /// with `-a` splits that again between its image and its rate image).
 pub const ALPHA: f64 = 0.01;
 
-/// The course scene the checks prefer.
-pub const COURSE_SCENE: &str = "CBspheres_lambertian.dae";
-
-/// The scene file to give the student and the scene as this project loads
-/// it: the course's from `scenes` (or `CS184_SCENES`) when there, else
-/// the built-in Cornell box written to `out/scenes/cornell-box.dae`.
+/// The scene file of [`CheckScene::Lambertian`] and the scene as this
+/// project loads it ([`CheckScene::file`]).
 pub fn scene_for_checks(scenes: Option<&Path>, out: &Path) -> Result<(PathBuf, Scene), String> {
-    let from_env = std::env::var_os("CS184_SCENES").map(PathBuf::from);
-    if let Some(dir) = scenes.map(Path::to_path_buf).or(from_env) {
-        let path = dir.join(COURSE_SCENE);
-        if path.exists() {
-            let loaded = scene::load(&path).map_err(|e| e.to_string())?;
-            return Ok((path, loaded));
-        }
-    }
-    let folder = out.join("scenes");
-    std::fs::create_dir_all(&folder).map_err(|e| format!("{}: {e}", folder.display()))?;
-    let path = folder.join("cornell-box.dae");
-    let mut text = Vec::new();
-    scene::export_scene::write_scene_dae(&builtin::cornell_box(), &mut text)
-        .map_err(|e| e.to_string())?;
-    std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
-    let loaded = scene::load(&path).map_err(|e| e.to_string())?;
-    Ok((path, loaded))
+    CheckScene::Lambertian.file(scenes, out)
 }
 
 /// The summary table: part, check, verdict, the likely mistake and the

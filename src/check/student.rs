@@ -31,6 +31,9 @@ pub struct Capabilities {
     /// `-a BATCH TOL` (adaptive sampling): a usage that lists `-s` but
     /// not `-a` is of a year without it.
     pub adaptive_flag: bool,
+    /// `-b R` and `-d D` (the thin lens of 3-2's part 8): every year's
+    /// starter has them; a usage that lists `-s` but not `-b` lacks them.
+    pub lens_flag: bool,
 }
 
 /// Why a run gave no image to compare.
@@ -137,6 +140,7 @@ impl Student {
         Ok(Capabilities {
             accumulate_flag: says("-o"),
             adaptive_flag: says("-a") || !says("-s"),
+            lens_flag: (says("-b") && says("-d")) || !says("-s"),
         })
     }
 

@@ -204,6 +204,11 @@ pub fn judge(
             "the binary has no -a (adaptive sampling)".into(),
         ));
     }
+    if check.lens.is_some() && !capabilities.lens_flag {
+        return result(Outcome::Skipped(
+            "the binary has no -b and -d (thin lens)".into(),
+        ));
+    }
     let mut args = check.flags(threads);
     args.push(scene_file.to_string());
     let image = match student.render(&args, "check.png", SIZE) {

@@ -1,8 +1,9 @@
-//! The checker's test bench, shared by `tests/check.rs` and
-//! `tests/check_rates.rs`: stand-in students (this project's own
-//! `pathtracer --course-exact=3-1`, with or without `--mistake NAME`,
-//! behind a wrapper script), the project's box as the scene, one stage
-//! that keeps its renders, and a reader of the report.
+//! The checker's test bench, shared by `tests/check.rs`,
+//! `tests/check_rates.rs` and `tests/check_32.rs`: stand-in students
+//! (this project's own `pathtracer --course-exact=3-1` or `=3-2`, with or
+//! without `--mistake NAME`, behind a wrapper script), the project's
+//! scenes ([`CheckScene`]) with one stage each that keeps its renders, and
+//! a reader of the report.
 
 #![allow(dead_code)]
 
@@ -11,7 +12,9 @@ use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 use std::time::Duration;
 
-use pathtracer::check::{battery, judge, scene_for_checks, Check, CheckResult, Stage, Student};
+use pathtracer::check::battery::battery_of;
+use pathtracer::check::{judge, Check, CheckResult, CheckScene, Stage, Student};
+use pathtracer::course::Assignment;
 use pathtracer::mistakes::Mistake;
 use pathtracer::scene::Scene;
 
@@ -25,46 +28,77 @@ pub fn script(dir: &Path, name: &str, body: &str) -> PathBuf {
     path
 }
 
-/// A stand-in student: the course's renderer with `mistake`, at `seed`.
+/// A stand-in student of assignment 3-1: the course's renderer with
+/// `mistake`, at `seed`.
 pub fn stand_in(dir: &Path, mistake: Option<Mistake>, seed: u64) -> PathBuf {
+    stand_in_of(Assignment::PathTracer1, dir, mistake, seed)
+}
+
+/// A stand-in student's binary of `assignment`, with `mistake`, at `seed`.
+pub fn stand_in_of(
+    assignment: Assignment,
+    dir: &Path,
+    mistake: Option<Mistake>,
+    seed: u64,
+) -> PathBuf {
     let flag = mistake.map_or(String::new(), |m| format!("--mistake {m}"));
+    let year = assignment.name();
     script(
         dir,
         &format!(
-            "student-{}-{seed}.sh",
+            "student-{year}-{}-{seed}.sh",
             mistake.map_or("right".into(), |m| m.to_string())
         ),
-        &format!("exec {PATHTRACER} --course-exact=3-1 {flag} --seed {seed} \"$@\""),
+        &format!("exec {PATHTRACER} --course-exact={year} {flag} --seed {seed} \"$@\""),
     )
 }
 
 pub struct Bench {
     pub dir: tempfile::TempDir,
+    /// The diffuse box's file and stage ([`CheckScene::Lambertian`]).
     pub scene_file: String,
     pub stage: &'static Stage,
+    /// Every scene's file and stage.
+    pub scenes: Vec<(CheckScene, String, &'static Stage)>,
 }
 
-/// One stage for every test, keeping its renders: the tests judge the
-/// same checks many times (the null images of a check, its suspects'),
-/// and each image is rendered once. Every bench exports the same scene.
-pub fn shared_stage(scene: Scene) -> &'static Stage {
-    static STAGE: OnceLock<Stage> = OnceLock::new();
-    STAGE.get_or_init(|| Stage::remembering(scene))
+/// One stage per scene for every test, keeping its renders: the tests
+/// judge the same checks many times (the null images of a check, its
+/// suspects'), and each image is rendered once. Every bench exports the
+/// same scenes.
+pub fn shared_stage(which: CheckScene, scene: Scene) -> &'static Stage {
+    static STAGES: [OnceLock<Stage>; 2] = [OnceLock::new(), OnceLock::new()];
+    let index = CheckScene::ALL.iter().position(|&s| s == which).unwrap();
+    STAGES[index].get_or_init(|| Stage::remembering(scene))
 }
 
 impl Bench {
-    /// The project's own box, exported where the checker puts it (no
+    /// The project's own scenes, exported where the checker puts them (no
     /// course scenes: `--scenes` names an empty folder).
     pub fn new() -> Self {
         let dir = tempfile::tempdir().unwrap();
         let empty = dir.path().join("no-scenes");
         std::fs::create_dir_all(&empty).unwrap();
-        let (file, scene) = scene_for_checks(Some(&empty), dir.path()).unwrap();
+        let scenes: Vec<(CheckScene, String, &'static Stage)> = CheckScene::ALL
+            .into_iter()
+            .map(|which| {
+                let (file, scene) = which.file(Some(&empty), dir.path()).unwrap();
+                let file = file.to_string_lossy().into_owned();
+                (which, file, shared_stage(which, scene))
+            })
+            .collect();
         Bench {
-            scene_file: file.to_string_lossy().into_owned(),
-            stage: shared_stage(scene),
+            scene_file: scenes[0].1.clone(),
+            stage: scenes[0].2,
+            scenes,
             dir,
         }
+    }
+
+    /// The file and stage of `check`'s scene.
+    pub fn scene_of(&self, check: &Check) -> (&str, &'static Stage) {
+        let (_, file, stage) = self.scenes.iter().find(|s| s.0 == check.scene).unwrap();
+        (file, stage)
     }
 
     pub fn student(&self, binary: PathBuf, timeout: Duration) -> Student {
@@ -77,23 +111,17 @@ impl Bench {
         }
     }
 
-    /// The checks `checks` for `binary`, at the full battery's rate.
+    /// The checks `checks` for `binary`, each at its assignment's full
+    /// battery's rate.
     pub fn run(&self, binary: PathBuf, checks: &[Check]) -> Vec<CheckResult> {
         let student = self.student(binary, Duration::from_secs(120));
         let capabilities = student.capabilities().unwrap();
-        let alpha = pathtracer::check::ALPHA / battery(&[]).len() as f64;
         checks
             .iter()
             .map(|c| {
-                judge(
-                    c,
-                    &student,
-                    capabilities,
-                    &self.scene_file,
-                    self.stage,
-                    alpha,
-                    2,
-                )
+                let alpha = pathtracer::check::ALPHA / battery_of(c.assignment).len() as f64;
+                let (file, stage) = self.scene_of(c);
+                judge(c, &student, capabilities, file, stage, alpha, 2)
             })
             .collect()
     }

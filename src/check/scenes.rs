@@ -1,0 +1,242 @@
+//! The scenes the checks render, and the files handed to the student's
+//! binary.
+//!
+//! - [`CheckScene::Lambertian`] (parts 3 to 5 and 8): the course's
+//!   `CBspheres_lambertian.dae` where one is found (`--scenes DIR`, else
+//!   `CS184_SCENES`), else the project's own Cornell box
+//!   ([`builtin::cornell_box`]);
+//! - [`CheckScene::Specular`] (part 6): always the project's own box of
+//!   mirror and glass, [`specular_box`]. The course's `CBspheres.dae`
+//!   holds a mirror ball and a glass ball only, and in a closed ball two
+//!   of part 6's mistakes cannot show: the `1 / eta^2` of the radiance
+//!   entering cancels the `eta^2` of it leaving, and light inside a ball
+//!   never meets the critical angle. This box adds a glass cube turned
+//!   45 degrees (light entering one face meets the next at about 62
+//!   degrees, past the critical 41.8: total internal reflection) and a
+//!   single glass pane across the box's opening (light crosses it once,
+//!   so the starter's `eta^2` shows: what lies behind it is
+//!   `ior^2 = 2.25` times as bright in a correct 3-2 solution).
+//!
+//! Each is written in the course's dialect ([`export_scene`]) into the
+//! output folder and read back by the project's loader, so that the
+//! reference renders what the student's binary reads.
+
+use std::path::{Path, PathBuf};
+
+use glam::Vec3;
+
+use crate::scene::{self, builtin, export_scene, Material, MaterialId, Scene};
+
+/// Which scene a check renders.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CheckScene {
+    /// Diffuse balls in a Cornell box.
+    Lambertian,
+    /// A mirror ball, a glass ball, a glass cube and a glass pane in a
+    /// Cornell box ([`specular_box`]).
+    Specular,
+}
+
+/// The course scene [`CheckScene::Lambertian`] prefers.
+pub const COURSE_SCENE: &str = "CBspheres_lambertian.dae";
+
+impl CheckScene {
+    /// Both, in the battery's order.
+    pub const ALL: [CheckScene; 2] = [CheckScene::Lambertian, CheckScene::Specular];
+
+    /// The file name it is written to in `out/scenes/`.
+    fn file_name(self) -> &'static str {
+        match self {
+            CheckScene::Lambertian => "cornell-box.dae",
+            CheckScene::Specular => "specular-box.dae",
+        }
+    }
+
+    /// The project's own scene.
+    fn own(self) -> Scene {
+        match self {
+            CheckScene::Lambertian => builtin::cornell_box(),
+            CheckScene::Specular => specular_box(),
+        }
+    }
+
+    /// The scene file to give the student and the scene as this project
+    /// loads it: for [`CheckScene::Lambertian`] the course's from
+    /// `scenes` (or `CS184_SCENES`) when there, else the project's own
+    /// written to `out/scenes/`.
+    pub fn file(self, scenes: Option<&Path>, out: &Path) -> Result<(PathBuf, Scene), String> {
+        if self == CheckScene::Lambertian {
+            let from_env = std::env::var_os("CS184_SCENES").map(PathBuf::from);
+            if let Some(dir) = scenes.map(Path::to_path_buf).or(from_env) {
+                let path = dir.join(COURSE_SCENE);
+                if path.exists() {
+                    let loaded = scene::load(&path).map_err(|e| e.to_string())?;
+                    return Ok((path, loaded));
+                }
+            }
+        }
+        let folder = out.join("scenes");
+        std::fs::create_dir_all(&folder).map_err(|e| format!("{}: {e}", folder.display()))?;
+        let path = folder.join(self.file_name());
+        let mut text = Vec::new();
+        export_scene::write_scene_dae(&self.own(), &mut text).map_err(|e| e.to_string())?;
+        std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
+        let loaded = scene::load(&path).map_err(|e| e.to_string())?;
+        Ok((path, loaded))
+    }
+}
+
+/// The centre of [`specular_box`]'s glass cube (on the floor, lifted by
+/// 0.01 so that its bottom is not the floor's plane) and its side.
+pub const CUBE_CENTRE: Vec3 = Vec3::new(-0.05, 0.16, 0.65);
+pub const CUBE_SIDE: f32 = 0.3;
+
+/// [`specular_box`]'s pane, at `z = 0.99` across the box's opening:
+/// `x` and `y` ranges (the upper right of the image).
+pub const PANE_X: (f32, f32) = (0.02, 0.98);
+pub const PANE_Y: (f32, f32) = (0.8, 1.48);
+
+/// The box of part 6's check: [`builtin::materials_box`] without its
+/// copper ball (no mistake of the catalogue is a microfacet one, and a
+/// student may check mirror and glass before writing it), with a glass
+/// cube of side [`CUBE_SIDE`] turned 45 degrees about `y` at
+/// [`CUBE_CENTRE`] (between the balls, in front) and a glass pane
+/// ([`PANE_X`], [`PANE_Y`]) facing the camera across the opening. Every
+/// face of the cube and the pane has corners of its own, so the course's
+/// normals, rebuilt from connectivity, are the faces' own; each is wound
+/// counter-clockwise seen from outside, so its normal points out (the
+/// pane's towards the camera: rays from the camera enter the glass).
+pub fn specular_box() -> Scene {
+    let mut scene = builtin::materials_box();
+    let materials = scene.materials.clone();
+    scene
+        .spheres
+        .retain(|s| !matches!(materials[s.material as usize], Material::Microfacet { .. }));
+    let glass = materials
+        .iter()
+        .position(|m| matches!(m, Material::Glass { .. }))
+        .expect("the materials box has glass") as MaterialId;
+    // The unit cube's faces, counter-clockwise seen from outside.
+    let corner = |x: bool, y: bool, z: bool| {
+        let s = |b: bool| if b { 1.0 } else { -1.0 };
+        Vec3::new(s(x), s(y), s(z))
+    };
+    let (f, t) = (false, true);
+    let faces = [
+        [
+            corner(f, f, f),
+            corner(t, f, f),
+            corner(t, f, t),
+            corner(f, f, t),
+        ],
+        [
+            corner(f, t, f),
+            corner(f, t, t),
+            corner(t, t, t),
+            corner(t, t, f),
+        ],
+        [
+            corner(f, f, f),
+            corner(f, t, f),
+            corner(t, t, f),
+            corner(t, f, f),
+        ],
+        [
+            corner(f, f, t),
+            corner(t, f, t),
+            corner(t, t, t),
+            corner(f, t, t),
+        ],
+        [
+            corner(f, f, f),
+            corner(f, f, t),
+            corner(f, t, t),
+            corner(f, t, f),
+        ],
+        [
+            corner(t, f, f),
+            corner(t, t, f),
+            corner(t, t, t),
+            corner(t, f, t),
+        ],
+    ];
+    let turn = glam::Quat::from_rotation_y(std::f32::consts::FRAC_PI_4);
+    for face in faces {
+        let placed = face.map(|p| CUBE_CENTRE + turn * (0.5 * CUBE_SIDE * p));
+        push_quad(&mut scene, glass, placed);
+    }
+    let (x0, x1) = PANE_X;
+    let (y0, y1) = PANE_Y;
+    let z = 0.99;
+    let pane = [
+        Vec3::new(x0, y0, z),
+        Vec3::new(x1, y0, z),
+        Vec3::new(x1, y1, z),
+        Vec3::new(x0, y1, z),
+    ];
+    push_quad(&mut scene, glass, pane);
+    scene.mesh.normals =
+        scene::normals::area_weighted_vertex_normals(&scene.mesh.positions, &scene.mesh.triangles);
+    scene.source = "check: specular-box".into();
+    scene
+}
+
+/// Two triangles over four corners of their own, in order around the quad.
+fn push_quad(scene: &mut Scene, material: MaterialId, corners: [Vec3; 4]) {
+    let mesh = &mut scene.mesh;
+    let base = mesh.positions.len() as u32;
+    mesh.positions.extend(corners);
+    mesh.triangles.push([base, base + 1, base + 2]);
+    mesh.triangles.push([base, base + 2, base + 3]);
+    mesh.materials.extend([material, material]);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The specular box, written in the course's dialect and read back:
+    /// the same glass faces in the same places, each facing out of the
+    /// cube (the pane towards the camera), the two balls, no copper.
+    #[test]
+    fn the_specular_box_survives_the_course_format() {
+        let scene = specular_box();
+        let mut text = Vec::new();
+        export_scene::write_scene_dae(&scene, &mut text).unwrap();
+        let loaded =
+            scene::collada::load_str(std::str::from_utf8(&text).unwrap(), "specular.dae").unwrap();
+        assert!(loaded.warnings.is_empty(), "{:?}", loaded.warnings);
+        let is = |s: &Scene, m: MaterialId, glass: bool| match s.materials[m as usize] {
+            Material::Glass { .. } => glass,
+            Material::Microfacet { .. } => panic!("a microfacet material is used"),
+            _ => !glass,
+        };
+        // Each glass triangle's centroid and unit normal (from its winding).
+        let glass_faces = |s: &Scene| {
+            s.mesh
+                .triangles
+                .iter()
+                .zip(&s.mesh.materials)
+                .filter(|(_, &m)| is(s, m, true))
+                .map(|(t, _)| {
+                    let p = t.map(|i| s.mesh.positions[i as usize]);
+                    let n = (p[1] - p[0]).cross(p[2] - p[0]).normalize();
+                    ((p[0] + p[1] + p[2]) / 3.0, n)
+                })
+                .collect::<Vec<(Vec3, Vec3)>>()
+        };
+        let (a, b) = (glass_faces(&loaded), glass_faces(&scene));
+        assert_eq!((a.len(), b.len()), (14, 14));
+        for ((p, n), (q, m)) in a.iter().zip(&b) {
+            assert!((*p - *q).length() < 1e-5 && (*n - *m).length() < 1e-4);
+        }
+        for (p, n) in &a[..12] {
+            assert!((*p - CUBE_CENTRE).dot(*n) > 0.1, "{p} {n}");
+        }
+        assert!(a[12..].iter().all(|(_, n)| n.z > 0.999));
+        assert_eq!(loaded.spheres.len(), 2);
+        for s in &loaded.spheres {
+            is(&loaded, s.material, false);
+        }
+    }
+}
