@@ -237,3 +237,95 @@ fn hemisphere_and_light_sampling_agree() {
         );
     }
 }
+
+/// Several samples an estimate, and lights chosen by power. Two
+/// rectangles of different radiance light a diffuse floor, whose radiance
+/// is then `a / pi (E_1 + E_2)` (Lambert's formula for each). Estimated by
+/// light sampling with 3 samples a light (each light's mean of its 3), by
+/// light sampling with 3 samples in all, each of a light chosen in
+/// proportion to its power (weighted `1 / (P(l) p)`), and by 4 hemisphere
+/// directions over the two rectangles as emissive quads. The other tests
+/// take one sample, where a sum and a mean agree.
+///
+/// Checked by hand: the hemisphere's `sum / n` as `sum * n` (4 times too
+/// bright), each light's `sum / samples` as `sum * samples`, and the
+/// by-power branch subtracting its samples instead of adding them each
+/// fail.
+#[test]
+fn several_samples_and_lights_chosen_by_power() {
+    use pathtracer::direct::{DirectHemisphere, DirectLights};
+    use pathtracer::global::DirectStrategy;
+    use pathtracer::lights::LightChoiceRule;
+    use pathtracer::world::WorldOptions;
+
+    let albedo = 0.6f32;
+    let lamps = [
+        rect_light(
+            4.0,
+            Vec3::new(0.3, 1.0, -0.2),
+            Vec3::new(-0.25, -1.0, 0.15),
+            0.8,
+            0.5,
+        ),
+        rect_light(
+            1.5,
+            Vec3::new(-0.5, 0.9, -0.6),
+            Vec3::new(0.5, -0.9, 0.6),
+            0.6,
+            0.6,
+        ),
+    ];
+    let radiances = [4.0f32, 1.5];
+    let expected: f64 = lamps
+        .iter()
+        .zip(radiances)
+        .map(|(lamp, l)| {
+            let corners = rect_corners(lamp).map(|c| c.as_dvec3());
+            albedo as f64 / PI * polygon_irradiance(DVec3::ZERO, DVec3::Y, &corners, l as f64)
+        })
+        .sum();
+    let ray = ray_towards(Vec3::new(-1.0, 1.0, 1.0), Vec3::ZERO);
+    let floor = |b: &mut SceneBuilder| {
+        let m = b.material(diffuse(albedo));
+        b.floor(m, 5.0);
+    };
+    let mut with_lights = SceneBuilder::new();
+    floor(&mut with_lights);
+    let mut with_quads = SceneBuilder::new();
+    floor(&mut with_quads);
+    for (lamp, l) in lamps.into_iter().zip(radiances) {
+        let glow = with_quads.material(common::emission(l));
+        with_quads.quad(glow, rect_corners(&lamp));
+        with_lights.light(lamp);
+    }
+    let (with_lights, with_quads) = (with_lights.finish(), with_quads.finish());
+    let (a1, a2) = (accel(&with_lights), accel(&with_quads));
+    let every = World::new(&with_lights, &a1);
+    let by_power = World::with_options(
+        &with_lights,
+        &a1,
+        WorldOptions {
+            light_choice: LightChoiceRule::ByPower,
+            ..WorldOptions::default()
+        },
+    );
+    let quads = World::new(&with_quads, &a2);
+    let three = DirectStrategy::Lights(DirectLights {
+        samples_per_light: 3,
+        mis: false,
+    });
+    let four = DirectStrategy::Hemisphere(DirectHemisphere { samples: 4 });
+    let alpha = ALPHA / 3.0;
+    let est = estimate(&every, &tracer(three, 1, false), &ray, 30_000, 41);
+    assert_mean_matches("3 samples a light", est, expected, alpha, 0.0);
+    let est = estimate(&by_power, &tracer(three, 1, false), &ray, 30_000, 42);
+    assert_mean_matches(
+        "3 samples of lights chosen by power",
+        est,
+        expected,
+        alpha,
+        0.0,
+    );
+    let est = estimate(&quads, &tracer(four, 1, false), &ray, 100_000, 43);
+    assert_mean_matches("4 hemisphere directions", est, expected, alpha, 0.0);
+}
