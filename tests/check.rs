@@ -143,6 +143,7 @@ fn a_broken_binary_gets_a_clear_line() {
         accumulate_flag: true,
         adaptive_flag: true,
         lens_flag: true,
+        environment_flag: true,
     };
     for (binary, says) in cases {
         let student = bench.student(binary.clone(), Duration::from_secs(60));
@@ -175,6 +176,7 @@ fn a_broken_binary_gets_a_clear_line() {
         accumulate_flag: false,
         adaptive_flag: true,
         lens_flag: true,
+        environment_flag: true,
     };
     let r = judge(&no_o, &hang, caps, &bench.scene_file, bench.stage, 1e-3, 2);
     assert!(matches!(&r.outcome, Outcome::Skipped(why) if why.contains("-o")));

@@ -147,6 +147,7 @@ fn no_rate_image_is_a_clear_line() {
         accumulate_flag: true,
         adaptive_flag,
         lens_flag: true,
+        environment_flag: true,
     };
     let judged = |body: &str, name: &str, adaptive_flag| {
         let student = bench.student(script(dir, name, body), Duration::from_secs(60));

@@ -40,6 +40,7 @@ use crate::course::{
     Assignment, CourseExact, CourseSampling, CourseView, StarterDirect, StarterTracer,
 };
 use crate::depth_of_field::ThinLens;
+use crate::environment::EnvironmentLight;
 use crate::intersect::Primitives;
 use crate::math::Rgb;
 use crate::mistakes::{Mistake, Mistakes};
@@ -82,6 +83,9 @@ pub struct Check {
     pub adaptive: Option<Adaptive>,
     /// `-b R -d D`: the thin lens, when the check has one.
     pub lens: Option<ThinLens>,
+    /// `-e FILE`: the scene's environment map
+    /// ([`CheckScene::environment_file`]).
+    pub environment: bool,
 }
 
 /// The battery: the checks of `parts`, of either assignment; those of
@@ -131,6 +135,7 @@ fn every_check() -> Vec<Check> {
         spp: 16,
         adaptive: None,
         lens: None,
+        environment: false,
     };
     let all = [
         direct,
@@ -182,6 +187,19 @@ fn every_check() -> Vec<Check> {
             hemisphere: false,
             max_depth: 6,
             spp: 4,
+            ..direct
+        },
+        Check {
+            part: 7,
+            assignment: Assignment::PathTracer2,
+            scene: CheckScene::Sky,
+            name: "environment light (-e, -l 4 -m 1)",
+            function: "EnvironmentLight::sample_L",
+            hemisphere: false,
+            light_samples: 4,
+            max_depth: 1,
+            spp: 4,
+            environment: true,
             ..direct
         },
         Check {
@@ -256,6 +274,7 @@ impl Check {
                     part <= self.part && (part != 5 || self.adaptive.is_some())
                 }
                 (Assignment::PathTracer2, 6) => self.scene == CheckScene::Specular,
+                (Assignment::PathTracer2, 7) => self.environment,
                 (Assignment::PathTracer2, 8) => self.lens.is_some(),
                 (Assignment::PathTracer2, _) => false,
             })
@@ -279,6 +298,8 @@ pub struct Stage {
     scene: Scene,
     camera: Camera,
     accel: WideBvhAccel,
+    /// The environment map lighting the scene (`-e`), if any.
+    environment: Option<EnvironmentLight>,
     /// The images rendered so far, when the stage keeps them
     /// ([`Stage::remembering`]), by check, mistakes and seed.
     kept: Option<Mutex<HashMap<String, Render>>>,
@@ -292,7 +313,16 @@ impl Stage {
             accel: WideBvhAccel::new(primitives),
             scene,
             camera,
+            environment: None,
             kept: None,
+        }
+    }
+
+    /// This stage lit by `environment` (the map of `-e`).
+    pub fn lit_by(self, environment: EnvironmentLight) -> Self {
+        Stage {
+            environment: Some(environment),
+            ..self
         }
     }
 
@@ -342,7 +372,7 @@ impl Stage {
         let view = CourseView {
             scene: &self.scene,
             camera: &camera,
-            environment: None,
+            environment: self.environment.as_ref(),
         };
         let sampling = CourseSampling {
             settings: RenderSettings {
@@ -386,7 +416,7 @@ mod tests {
         assert_eq!(assignment_of(&[5, 6]), None);
         let parts = |a| battery_of(a).iter().map(|c| c.part).collect::<Vec<_>>();
         assert_eq!(parts(Assignment::PathTracer1), [3, 3, 4, 4, 5]);
-        assert_eq!(parts(Assignment::PathTracer2), [6, 8]);
+        assert_eq!(parts(Assignment::PathTracer2), [6, 7, 8]);
         assert_eq!(battery(&[]), battery_of(Assignment::PathTracer1));
     }
 

@@ -16,13 +16,16 @@
 //! - [`scenes`]: the scenes the checks render: the course's
 //!   `CBspheres_lambertian.dae` where one is found (`--scenes DIR`, else
 //!   `CS184_SCENES`), else the project's own Cornell box; for part 6 a box
-//!   of mirror and glass of the project's; each written in the course's
-//!   dialect ([`crate::scene::export_scene`]) into the output folder.
+//!   of mirror and glass of the project's, for part 7 balls on a floor
+//!   under a sky of the project's ([`sky`], an OpenEXR map the course's
+//!   loader reads); each written in the course's dialect
+//!   ([`crate::scene::export_scene`]) into the output folder.
 
 pub mod battery;
 pub mod rates;
 pub mod report;
 pub mod scenes;
+pub mod sky;
 pub mod stats;
 pub mod student;
 pub mod verdict;

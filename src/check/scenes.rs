@@ -15,7 +15,10 @@
 //!   degrees, past the critical 41.8: total internal reflection) and a
 //!   single glass pane across the box's opening (light crosses it once,
 //!   so the starter's `eta^2` shows: what lies behind it is
-//!   `ior^2 = 2.25` times as bright in a correct 3-2 solution).
+//!   `ior^2 = 2.25` times as bright in a correct 3-2 solution);
+//! - [`CheckScene::Sky`] (part 7): two diffuse balls on a floor, no
+//!   light but the sky of [`super::sky`], written beside the scene as
+//!   `sky-balls.exr` and given with `-e`.
 //!
 //! Each is written in the course's dialect ([`export_scene`]) into the
 //! output folder and read back by the project's loader, so that the
@@ -25,6 +28,9 @@ use std::path::{Path, PathBuf};
 
 use glam::Vec3;
 
+use super::battery::Stage;
+use crate::course::{Assignment, CourseExact};
+use crate::environment::{EnvironmentLight, EnvironmentMap, EnvironmentSampling};
 use crate::scene::{self, builtin, export_scene, Material, MaterialId, Scene};
 
 /// Which scene a check renders.
@@ -35,20 +41,28 @@ pub enum CheckScene {
     /// A mirror ball, a glass ball, a glass cube and a glass pane in a
     /// Cornell box ([`specular_box`]).
     Specular,
+    /// Diffuse balls on a floor lit by an environment map alone
+    /// ([`sky_balls`], [`super::sky`]).
+    Sky,
 }
 
 /// The course scene [`CheckScene::Lambertian`] prefers.
 pub const COURSE_SCENE: &str = "CBspheres_lambertian.dae";
 
 impl CheckScene {
-    /// Both, in the battery's order.
-    pub const ALL: [CheckScene; 2] = [CheckScene::Lambertian, CheckScene::Specular];
+    /// Every one, in the battery's order.
+    pub const ALL: [CheckScene; 3] = [
+        CheckScene::Lambertian,
+        CheckScene::Specular,
+        CheckScene::Sky,
+    ];
 
     /// The file name it is written to in `out/scenes/`.
     fn file_name(self) -> &'static str {
         match self {
             CheckScene::Lambertian => "cornell-box.dae",
             CheckScene::Specular => "specular-box.dae",
+            CheckScene::Sky => "sky-balls.dae",
         }
     }
 
@@ -57,7 +71,39 @@ impl CheckScene {
         match self {
             CheckScene::Lambertian => builtin::cornell_box(),
             CheckScene::Specular => specular_box(),
+            CheckScene::Sky => sky_balls(),
         }
+    }
+
+    /// The environment map's file beside the scene file `scene_file`, for
+    /// the scene lit by one.
+    pub fn environment_file(self, scene_file: &Path) -> Option<PathBuf> {
+        (self == CheckScene::Sky).then(|| scene_file.with_extension("exr"))
+    }
+
+    /// The stage of the scene `scene` read from `file` (with
+    /// [`Stage::remembering`] when `remember`), lit by its environment
+    /// map as the course's 3-2 solution samples it, read back from its
+    /// file.
+    pub fn stage(self, file: &Path, scene: Scene, remember: bool) -> Result<Stage, String> {
+        let stage = if remember {
+            Stage::remembering(scene)
+        } else {
+            Stage::new(scene)
+        };
+        let Some(map_file) = self.environment_file(file) else {
+            return Ok(stage);
+        };
+        let map = EnvironmentMap::load(&map_file).map_err(|e| e.to_string())?;
+        let weights = CourseExact {
+            assignment: Assignment::PathTracer2,
+        }
+        .environment_weights();
+        Ok(stage.lit_by(EnvironmentLight::with_weights(
+            map,
+            EnvironmentSampling::Importance,
+            weights,
+        )))
     }
 
     /// The scene file to give the student and the scene as this project
@@ -81,6 +127,9 @@ impl CheckScene {
         let mut text = Vec::new();
         export_scene::write_scene_dae(&self.own(), &mut text).map_err(|e| e.to_string())?;
         std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
+        if let Some(map_file) = self.environment_file(&path) {
+            super::sky::write_exr(&map_file)?;
+        }
         let loaded = scene::load(&path).map_err(|e| e.to_string())?;
         Ok((path, loaded))
     }
@@ -178,6 +227,23 @@ pub fn specular_box() -> Scene {
     scene.mesh.normals =
         scene::normals::area_weighted_vertex_normals(&scene.mesh.positions, &scene.mesh.triangles);
     scene.source = "check: specular-box".into();
+    scene
+}
+
+/// Part 7's scene: [`builtin::environment_spheres`] (a floor and two
+/// balls of radius 0.5, no light) with both balls diffuse (its copper
+/// ball made white, albedo 0.75, for the reason [`specular_box`] has no
+/// copper).
+pub fn sky_balls() -> Scene {
+    let mut scene = builtin::environment_spheres();
+    for m in &mut scene.materials {
+        if matches!(m, Material::Microfacet { .. }) {
+            *m = Material::Diffuse {
+                albedo: Vec3::splat(0.75),
+            };
+        }
+    }
+    scene.source = "check: sky-balls".into();
     scene
 }
 

@@ -34,6 +34,8 @@ pub struct Capabilities {
     /// `-b R` and `-d D` (the thin lens of 3-2's part 8): every year's
     /// starter has them; a usage that lists `-s` but not `-b` lacks them.
     pub lens_flag: bool,
+    /// `-e FILE` (the environment map of 3-2's part 7), likewise.
+    pub environment_flag: bool,
 }
 
 /// Why a run gave no image to compare.
@@ -141,6 +143,7 @@ impl Student {
             accumulate_flag: says("-o"),
             adaptive_flag: says("-a") || !says("-s"),
             lens_flag: (says("-b") && says("-d")) || !says("-s"),
+            environment_flag: says("-e") || !says("-s"),
         })
     }
 

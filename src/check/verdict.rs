@@ -209,7 +209,21 @@ pub fn judge(
             "the binary has no -b and -d (thin lens)".into(),
         ));
     }
+    if check.environment && !capabilities.environment_flag {
+        return result(Outcome::Skipped(
+            "the binary has no -e (environment map)".into(),
+        ));
+    }
     let mut args = check.flags(threads);
+    if check.environment {
+        match check
+            .scene
+            .environment_file(std::path::Path::new(scene_file))
+        {
+            Some(map) => args.extend(["-e".to_string(), map.to_string_lossy().into_owned()]),
+            None => return result(Outcome::Error("the scene has no environment map".into())),
+        }
+    }
     args.push(scene_file.to_string());
     let image = match student.render(&args, "check.png", SIZE) {
         Ok(image) => image,

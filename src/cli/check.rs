@@ -66,8 +66,9 @@ pub fn check(args: &CheckArgs) -> Result<(), Box<dyn Error>> {
     for which in CheckScene::ALL {
         if checks.iter().any(|c| c.scene == which) {
             let (file, scene) = which.file(args.scenes.as_deref(), &args.out)?;
-            let file = std::path::absolute(&file)?.to_string_lossy().into_owned();
-            stages.push((which, file, Stage::new(scene)));
+            let file = std::path::absolute(&file)?;
+            let stage = which.stage(&file, scene, false)?;
+            stages.push((which, file.to_string_lossy().into_owned(), stage));
         }
     }
     // A binary that cannot even print its usage fails every check with
@@ -167,7 +168,7 @@ mod tests {
                 .map_err(|e| e.to_string())
         };
         assert_eq!(parts("--student s"), Ok(vec![3, 3, 4, 4, 5]));
-        assert_eq!(parts("--student s --assignment 3-2"), Ok(vec![6, 8]));
+        assert_eq!(parts("--student s --assignment 3-2"), Ok(vec![6, 7, 8]));
         assert_eq!(parts("--student s --part 8"), Ok(vec![8]));
         assert_eq!(
             parts("--student s --part 3 --assignment 3-1"),

@@ -66,10 +66,10 @@ pub struct Bench {
 /// judge the same checks many times (the null images of a check, its
 /// suspects'), and each image is rendered once. Every bench exports the
 /// same scenes.
-pub fn shared_stage(which: CheckScene, scene: Scene) -> &'static Stage {
-    static STAGES: [OnceLock<Stage>; 2] = [OnceLock::new(), OnceLock::new()];
+pub fn shared_stage(which: CheckScene, file: &Path, scene: Scene) -> &'static Stage {
+    static STAGES: [OnceLock<Stage>; 3] = [OnceLock::new(), OnceLock::new(), OnceLock::new()];
     let index = CheckScene::ALL.iter().position(|&s| s == which).unwrap();
-    STAGES[index].get_or_init(|| Stage::remembering(scene))
+    STAGES[index].get_or_init(|| which.stage(file, scene, true).unwrap())
 }
 
 impl Bench {
@@ -83,8 +83,8 @@ impl Bench {
             .into_iter()
             .map(|which| {
                 let (file, scene) = which.file(Some(&empty), dir.path()).unwrap();
-                let file = file.to_string_lossy().into_owned();
-                (which, file, shared_stage(which, scene))
+                let stage = shared_stage(which, &file, scene);
+                (which, file.to_string_lossy().into_owned(), stage)
             })
             .collect();
         Bench {
