@@ -240,7 +240,9 @@ fn hemisphere_and_light_sampling_agree() {
 
 /// Several samples an estimate, and lights chosen by power. Two
 /// rectangles of different radiance light a diffuse floor, whose radiance
-/// is then `a / pi (E_1 + E_2)` (Lambert's formula for each). Estimated by
+/// is then `a / pi (E_1 + E_2)` (Lambert's formula for each); for light
+/// sampling a point light of intensity `I` at `r` adds `a / pi I cos /
+/// |r|^2`. Estimated by
 /// light sampling with 3 samples a light (each light's mean of its 3), by
 /// light sampling with 3 samples in all, each of a light chosen in
 /// proportion to its power (weighted `1 / (P(l) p)`), and by 4 hemisphere
@@ -248,9 +250,9 @@ fn hemisphere_and_light_sampling_agree() {
 /// take one sample, where a sum and a mean agree.
 ///
 /// Checked by hand: the hemisphere's `sum / n` as `sum * n` (4 times too
-/// bright), each light's `sum / samples` as `sum * samples`, and the
-/// by-power branch subtracting its samples instead of adding them each
-/// fail.
+/// bright), each light's `sum / samples` as `sum * samples`, the
+/// by-power branch subtracting its samples instead of adding them, and a
+/// delta light's weight `1 / P(l)` as `P(l)` each fail.
 #[test]
 fn several_samples_and_lights_chosen_by_power() {
     use pathtracer::direct::{DirectHemisphere, DirectLights};
@@ -284,6 +286,10 @@ fn several_samples_and_lights_chosen_by_power() {
             albedo as f64 / PI * polygon_irradiance(DVec3::ZERO, DVec3::Y, &corners, l as f64)
         })
         .sum();
+    // A point light too, where light sampling alone sees it.
+    let (intensity, bulb) = (0.8f32, Vec3::new(0.2, 1.2, 0.4));
+    let r = bulb.as_dvec3();
+    let from_bulb = albedo as f64 / PI * intensity as f64 * r.y / r.length().powi(3);
     let ray = ray_towards(Vec3::new(-1.0, 1.0, 1.0), Vec3::ZERO);
     let floor = |b: &mut SceneBuilder| {
         let m = b.material(diffuse(albedo));
@@ -291,6 +297,10 @@ fn several_samples_and_lights_chosen_by_power() {
     };
     let mut with_lights = SceneBuilder::new();
     floor(&mut with_lights);
+    with_lights.light(Light::Point {
+        intensity: Vec3::splat(intensity),
+        position: bulb,
+    });
     let mut with_quads = SceneBuilder::new();
     floor(&mut with_quads);
     for (lamp, l) in lamps.into_iter().zip(radiances) {
@@ -316,16 +326,11 @@ fn several_samples_and_lights_chosen_by_power() {
     });
     let four = DirectStrategy::Hemisphere(DirectHemisphere { samples: 4 });
     let alpha = ALPHA / 3.0;
+    let lit = expected + from_bulb;
     let est = estimate(&every, &tracer(three, 1, false), &ray, 30_000, 41);
-    assert_mean_matches("3 samples a light", est, expected, alpha, 0.0);
+    assert_mean_matches("3 samples a light", est, lit, alpha, 0.0);
     let est = estimate(&by_power, &tracer(three, 1, false), &ray, 30_000, 42);
-    assert_mean_matches(
-        "3 samples of lights chosen by power",
-        est,
-        expected,
-        alpha,
-        0.0,
-    );
+    assert_mean_matches("3 samples of lights chosen by power", est, lit, alpha, 0.0);
     let est = estimate(&quads, &tracer(four, 1, false), &ray, 100_000, 43);
     assert_mean_matches("4 hemisphere directions", est, expected, alpha, 0.0);
 }
