@@ -5,8 +5,9 @@
 //!
 //! - [`student`]: running the binary (time-out, its own working folder,
 //!   its image read back);
-//! - [`battery`]: the checks, one setting of the flags each, and the
-//!   course's renders of them;
+//! - [`battery`](mod@battery): the checks, one setting of the flags each;
+//! - [`stage`]: the scene loaded once, and the course's renders of the
+//!   checks;
 //! - [`stats`]: the decision, against the distribution of a correct
 //!   solution's images (false alarms at most [`ALPHA`] per battery);
 //! - [`rates`]: part 5's sample-rate image (`NAME_rate.png`) read back
@@ -26,6 +27,7 @@ pub mod rates;
 pub mod report;
 pub mod scenes;
 pub mod sky;
+pub mod stage;
 pub mod stats;
 pub mod student;
 pub mod verdict;
