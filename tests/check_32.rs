@@ -15,7 +15,7 @@ mod bench;
 
 use std::time::Duration;
 
-use bench::{report_is_whole, script, stand_in_of, Bench};
+use bench::{all_pass, report_is_whole, script, stand_in_of, Bench};
 use pathtracer::check::battery::battery_of;
 use pathtracer::check::{battery, judge, CheckScene, Outcome};
 use pathtracer::course::Assignment;
@@ -39,15 +39,7 @@ fn a_correct_3_2_renderer_passes_parts_6_to_8() {
     let binary = stand_in_of(THREE_TWO, bench.dir.path(), None, 1);
     let results = bench.run(binary, &checks);
     report_is_whole(&results, bench.dir.path());
-    for r in results {
-        match r.outcome {
-            Outcome::Pass {
-                statistic,
-                threshold,
-            } => eprintln!("{}: {statistic:.1} of {threshold:.1}", r.check.name),
-            other => panic!("{}: {other:?}", r.check.name),
-        }
-    }
+    all_pass(results);
 }
 
 /// Each of `mistakes`, injected into a 3-2 stand-in, fails the check of

@@ -13,7 +13,7 @@ use std::sync::OnceLock;
 use std::time::Duration;
 
 use pathtracer::check::battery::battery_of;
-use pathtracer::check::{judge, Check, CheckResult, CheckScene, Stage, Student};
+use pathtracer::check::{judge, Check, CheckResult, CheckScene, Outcome, Stage, Student};
 use pathtracer::course::Assignment;
 use pathtracer::mistakes::Mistake;
 use pathtracer::scene::Scene;
@@ -124,6 +124,20 @@ impl Bench {
                 judge(c, &student, capabilities, file, stage, alpha, 2)
             })
             .collect()
+    }
+}
+
+/// Every check of `results` passed; prints each statistic and its
+/// threshold.
+pub fn all_pass(results: Vec<CheckResult>) {
+    for r in results {
+        match r.outcome {
+            Outcome::Pass {
+                statistic,
+                threshold,
+            } => eprintln!("{}: {statistic:.1} of {threshold:.1}", r.check.name),
+            other => panic!("{}: {other:?}", r.check.name),
+        }
     }
 }
 
