@@ -13,6 +13,8 @@
 //! - [`rates`]: part 5's sample-rate image (`NAME_rate.png`) read back
 //!   as the fraction of samples each pixel took, `r = (1 + R - B) / 2`;
 //! - [`verdict`]: what differs and where, and which mistakes fit;
+//! - [`outcome`]: what a judged check gives: its verdict and the images
+//!   the report shows;
 //! - [`report`]: `report.html`, one self-contained page;
 //! - [`scenes`]: the scenes the checks render: the course's
 //!   `CBspheres_lambertian.dae` where one is found (`--scenes DIR`, else
@@ -23,6 +25,7 @@
 //!   ([`crate::scene::export_scene`]) into the output folder.
 
 pub mod battery;
+pub mod outcome;
 pub mod rates;
 pub mod report;
 pub mod scenes;

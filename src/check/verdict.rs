@@ -8,107 +8,15 @@ use super::rates;
 use super::stats::{self, chi_square_quantile, NullModel, BLOCK};
 use super::student::{Capabilities, Student};
 use crate::math::{luminance, Rgb};
-use crate::mistakes::{Mistake, Mistakes};
+use crate::mistakes::Mistakes;
+
+pub use super::outcome::{CheckImages, CheckResult, Outcome, RateImages, Suspect, SHOWN_SUSPECTS};
 
 /// Renders of a correct solution in the null model.
 pub const NULL_RENDERS: usize = 8;
 
 /// Renders of each suspected mistake.
 pub const SUSPECT_RENDERS: usize = 2;
-
-/// A catalogued mistake held against a failed image.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Suspect {
-    pub mistake: Mistake,
-    /// [`stats::statistic`] per cell against the mistake's images (their mean,
-    /// their noise or the correct images', the larger): about 1 or less
-    /// when it fits.
-    pub misfit: f64,
-    /// Whether it passes where the correct image failed.
-    pub fits: bool,
-}
-
-/// What a check found.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Outcome {
-    /// `statistic <= threshold` ([`stats::statistic`] and its chi-square bound).
-    Pass { statistic: f64, threshold: f64 },
-    Fail {
-        statistic: f64,
-        threshold: f64,
-        /// What differs and where, in words.
-        what: String,
-        /// The mistakes that fit, best first, then the rest by misfit.
-        suspects: Vec<Suspect>,
-    },
-    /// Not run, and why (a flag the binary lacks).
-    Skipped(String),
-    /// The binary gave no image: why.
-    Error(String),
-}
-
-#[derive(Clone, Debug, PartialEq)]
-pub struct CheckResult {
-    pub check: Check,
-    pub outcome: Outcome,
-    /// What the report shows, when the binary gave an image.
-    pub images: Option<CheckImages>,
-}
-
-impl Outcome {
-    /// Its word in the table and the report.
-    pub fn word(&self) -> &'static str {
-        match self {
-            Outcome::Pass { .. } => "pass",
-            Outcome::Fail { .. } => "FAIL",
-            Outcome::Skipped(_) => "skipped",
-            Outcome::Error(_) => "error",
-        }
-    }
-
-    /// The best mistake that fits a failed image, if any.
-    pub fn likely_mistake(&self) -> Option<Mistake> {
-        match self {
-            Outcome::Fail { suspects, .. } => suspects.iter().find(|s| s.fits).map(|s| s.mistake),
-            _ => None,
-        }
-    }
-}
-
-/// The 8-bit images of a check (three bytes a pixel, [`SIZE`]).
-#[derive(Clone, Debug, PartialEq)]
-pub struct CheckImages {
-    pub student: Vec<u8>,
-    /// The mean of the null model's renders.
-    pub reference: Vec<u8>,
-    /// Per block, the student's luminance over the reference's, in
-    /// radiance (display ratio to the power 2.2).
-    pub ratio: Vec<f64>,
-    /// The best suspects' images (a render of each), best first.
-    pub suspects: Vec<(Mistake, Vec<u8>)>,
-    /// The rate images, for a check with `-a`.
-    pub rates: Option<RateImages>,
-}
-
-/// The sample-rate images of a check with `-a`, and their verdict.
-#[derive(Clone, Debug, PartialEq)]
-pub struct RateImages {
-    /// The student's `check_rate.png` as it wrote it.
-    pub student: Vec<u8>,
-    /// The course's colours of the null renders' mean fraction per pixel.
-    pub reference: Vec<u8>,
-    /// Per block, the student's mean fraction over the reference's.
-    pub ratio: Vec<f64>,
-    /// The mean fraction of samples taken, the student's and the reference's.
-    pub student_mean: f64,
-    pub reference_mean: f64,
-    /// [`stats::statistic`] of the rate cells and its threshold.
-    pub statistic: f64,
-    pub threshold: f64,
-}
-
-/// How many suspects the report shows.
-pub const SHOWN_SUSPECTS: usize = 3;
 
 /// What a check compares: the image's display values, three a pixel, and
 /// with `-a` the rate image's fractions, one a pixel ([`rates`]).

@@ -1,0 +1,99 @@
+//! What judging a check gives: its outcome (pass, fail with the
+//! mistakes that fit, skipped, error), and the images the report shows.
+
+use super::battery::Check;
+use crate::mistakes::Mistake;
+
+/// A catalogued mistake held against a failed image.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Suspect {
+    pub mistake: Mistake,
+    /// [`super::stats::statistic`] per cell against the mistake's images (their mean,
+    /// their noise or the correct images', the larger): about 1 or less
+    /// when it fits.
+    pub misfit: f64,
+    /// Whether it passes where the correct image failed.
+    pub fits: bool,
+}
+
+/// What a check found.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Outcome {
+    /// `statistic <= threshold` ([`super::stats::statistic`] and its chi-square bound).
+    Pass { statistic: f64, threshold: f64 },
+    Fail {
+        statistic: f64,
+        threshold: f64,
+        /// What differs and where, in words.
+        what: String,
+        /// The mistakes that fit, best first, then the rest by misfit.
+        suspects: Vec<Suspect>,
+    },
+    /// Not run, and why (a flag the binary lacks).
+    Skipped(String),
+    /// The binary gave no image: why.
+    Error(String),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct CheckResult {
+    pub check: Check,
+    pub outcome: Outcome,
+    /// What the report shows, when the binary gave an image.
+    pub images: Option<CheckImages>,
+}
+
+impl Outcome {
+    /// Its word in the table and the report.
+    pub fn word(&self) -> &'static str {
+        match self {
+            Outcome::Pass { .. } => "pass",
+            Outcome::Fail { .. } => "FAIL",
+            Outcome::Skipped(_) => "skipped",
+            Outcome::Error(_) => "error",
+        }
+    }
+
+    /// The best mistake that fits a failed image, if any.
+    pub fn likely_mistake(&self) -> Option<Mistake> {
+        match self {
+            Outcome::Fail { suspects, .. } => suspects.iter().find(|s| s.fits).map(|s| s.mistake),
+            _ => None,
+        }
+    }
+}
+
+/// The 8-bit images of a check (three bytes a pixel, [`super::battery::SIZE`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct CheckImages {
+    pub student: Vec<u8>,
+    /// The mean of the null model's renders.
+    pub reference: Vec<u8>,
+    /// Per block, the student's luminance over the reference's, in
+    /// radiance (display ratio to the power 2.2).
+    pub ratio: Vec<f64>,
+    /// The best suspects' images (a render of each), best first.
+    pub suspects: Vec<(Mistake, Vec<u8>)>,
+    /// The rate images, for a check with `-a`.
+    pub rates: Option<RateImages>,
+}
+
+/// The sample-rate images of a check with `-a`, and their verdict.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RateImages {
+    /// The student's `check_rate.png` as it wrote it.
+    pub student: Vec<u8>,
+    /// The course's colours of the null renders' mean fraction per pixel.
+    pub reference: Vec<u8>,
+    /// Per block, the student's mean fraction over the reference's.
+    pub ratio: Vec<f64>,
+    /// The mean fraction of samples taken, the student's and the reference's.
+    pub student_mean: f64,
+    pub reference_mean: f64,
+    /// [`super::stats::statistic`] of the rate cells and its threshold.
+    pub statistic: f64,
+    pub threshold: f64,
+}
+
+/// How many suspects the report shows.
+pub const SHOWN_SUSPECTS: usize = 3;
