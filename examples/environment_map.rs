@@ -16,7 +16,21 @@
 //!   `10^-3` (black) to `10^3` (white); the uniform density is 1.
 //!
 //! and the studio map itself as a Radiance `.hdr` to `--hdr` (default
-//! `studio.hdr`), for `-e`. Prints, per map: where its light and its
+//! `studio.hdr`), for `-e`.
+//!
+//! With `--sky FILE`, it writes only an outdoor map of its own
+//! (`environment::sky::Sky`) as a Radiance `.hdr`, for measuring the
+//! importance sampler on maps it was not tuned on (docs/10):
+//!
+//! ```text
+//! cargo run --release --example environment_map -- --sky FILE [--height H]
+//!     [--sun-degrees R] [--black-ground]
+//! ```
+//!
+//! `H` rows (default 1024: a 2k map), a sun of angular radius `R` degrees
+//! (default the built-in sky's 2; the real sun's is 0.27) lighting a
+//! surface as the built-in sun does, and black below the horizon with
+//! `--black-ground`. Prints, per map: where its light and its
 //! sampling probability sit, what sampling the cells by their texels
 //! instead of the cell-averaged lookup would miss, and the standard
 //! deviation of the one-sample estimators of `integral L dw` and of the
@@ -28,7 +42,7 @@ use std::f32::consts::PI;
 use std::path::{Path, PathBuf};
 
 use glam::{Vec2, Vec3};
-use pathtracer::environment::sky::{sun_direction, SUN_RADIUS};
+use pathtracer::environment::sky::{sun_direction, Sky, SUN_RADIUS};
 use pathtracer::environment::{
     builtin_sky, uv_to_direction, EnvironmentLight, EnvironmentMap, EnvironmentSampling,
 };
@@ -256,21 +270,37 @@ fn report(name: &str, map: EnvironmentMap, out: &Path) -> Result<()> {
     Ok(())
 }
 
+const USAGE: &str = "usage: environment_map [--out DIR] [--hdr FILE]\n       \
+     environment_map --sky FILE [--height H] [--sun-degrees R] [--black-ground]";
+
 fn main() -> Result<()> {
     let mut out = PathBuf::from("docs/images");
     let mut hdr = PathBuf::from("studio.hdr");
+    let (mut sky_file, mut sky, mut height) = (None::<PathBuf>, Sky::default(), 1024);
     let mut args = std::env::args().skip(1);
     while let Some(arg) = args.next() {
+        let mut value = |what: &str| args.next().ok_or(format!("{arg} needs {what}\n{USAGE}"));
         match arg.as_str() {
-            "--out" => out = args.next().ok_or("--out needs a directory")?.into(),
-            "--hdr" => hdr = args.next().ok_or("--hdr needs a file")?.into(),
-            other => {
-                return Err(format!(
-                    "unexpected argument {other}\nusage: environment_map [--out DIR] [--hdr FILE]"
-                )
-                .into())
+            "--out" => out = value("a directory")?.into(),
+            "--hdr" => hdr = value("a file")?.into(),
+            "--sky" => sky_file = Some(value("a file")?.into()),
+            "--height" => height = value("a number of rows")?.parse()?,
+            "--sun-degrees" => {
+                let degrees: f32 = value("an angle in degrees")?.parse()?;
+                if !(degrees > 0.0 && degrees < 90.0) {
+                    return Err(format!("--sun-degrees {degrees}: not in (0, 90)").into());
+                }
+                sky = sky.with_sun_radius(degrees.to_radians());
             }
+            "--black-ground" => sky.ground = Rgb::ZERO,
+            other => return Err(format!("unexpected argument {other}\n{USAGE}").into()),
         }
+    }
+    if let Some(file) = sky_file {
+        let map = sky.map(&file.display().to_string(), height)?;
+        write_hdr(&map, &file)?;
+        eprintln!("wrote {} ({} x {height})", file.display(), 2 * height);
+        return Ok(());
     }
     std::fs::create_dir_all(&out)?;
     report("sky", builtin_sky()?, &out)?;

@@ -41,6 +41,9 @@ def main():
             seconds = time.perf_counter() - start
             calls.append(image)
             print(f"mitsuba render {len(calls)}: {seconds:.3f} s", flush=True)
+            # Written here, after the clock stops: the tool may leave by
+            # `os._exit` as soon as its own work is done.
+            write(last_path, image, write_async=False)
             return image
 
         mi.render = timed
@@ -51,7 +54,6 @@ def main():
 
     mi.set_variant = set_variant
     runpy.run_path(tool, run_name="__main__")
-    mi.util.write_bitmap(last_path, calls[-1])
     sys.stdout.flush()
     # Dr.Jit's thread pool can hang the interpreter's shutdown once the
     # renders are done: leave at once, the files are written.

@@ -166,10 +166,12 @@ impl EnvironmentLight {
                 (wi, uniform_sphere_pdf(), self.escaped_radiance(wi))
             }
             EnvironmentSampling::Importance => {
-                let s = self.tables.distribution.sample(u);
-                let sin_theta = (PI * s.x.y).sin();
-                let pdf = s.pdf / (2.0 * PI * PI * sin_theta);
-                (uv_to_direction(s.x), pdf, self.tables.map.lookup(s.x))
+                let map = &self.tables.map;
+                let s = (self.tables.distribution)
+                    .sample_hinted(u, |row, column| map.prefetch_around(column, row));
+                let wi = uv_to_direction(s.x);
+                let pdf = s.pdf / (2.0 * PI * PI * sin_theta(wi));
+                (wi, pdf, self.tables.map.lookup(s.x))
             }
         };
         (pdf > 0.0 && pdf.is_finite()).then_some(LightSample {
@@ -187,14 +189,34 @@ impl EnvironmentLight {
             EnvironmentSampling::Uniform => uniform_sphere_pdf(),
             EnvironmentSampling::Importance => {
                 let w = wi.normalize_or_zero();
-                let sin_theta = w.x.hypot(w.z);
-                if sin_theta <= 0.0 {
-                    return 0.0;
-                }
-                let p = self.tables.distribution.pdf(direction_to_uv(w));
-                p / (2.0 * PI * PI * sin_theta)
+                self.importance_pdf(w, direction_to_uv(w))
             }
         }
+    }
+
+    /// The importance sampler's density per steradian at the unit
+    /// direction `w`, whose map coordinates are `uv`; 0 at the poles.
+    fn importance_pdf(&self, w: Vec3, uv: Vec2) -> f32 {
+        let sin_theta = sin_theta(w);
+        if sin_theta <= 0.0 {
+            return 0.0;
+        }
+        self.tables.distribution.pdf(uv) / (2.0 * PI * PI * sin_theta)
+    }
+
+    /// What a ray escaping in the unit direction `w` sees, and, if
+    /// `with_pdf`, the density [`Self::pdf_li`] of `w` (else 0): one
+    /// mapping to the map's `(u, v)` for both, and no density where the
+    /// radiance is black (it weighs nothing there).
+    pub fn escaped(&self, w: Vec3, with_pdf: bool) -> (Rgb, f32) {
+        let uv = direction_to_uv(w);
+        let radiance = self.tables.map.lookup(uv);
+        let pdf = match self.sampling {
+            _ if !with_pdf || radiance == Rgb::ZERO => 0.0,
+            EnvironmentSampling::Uniform => uniform_sphere_pdf(),
+            EnvironmentSampling::Importance => self.importance_pdf(w, uv),
+        };
+        (radiance, pdf)
     }
 
     /// Radiance seen along a ray that escapes in the unit direction `w`.
@@ -207,6 +229,11 @@ impl EnvironmentLight {
     pub fn power(&self, scene_radius: f32) -> Rgb {
         PI * scene_radius * scene_radius * self.tables.radiant_integral
     }
+}
+
+/// `sin(theta)` of the unit direction `w`, theta measured from +Y.
+fn sin_theta(w: Vec3) -> f32 {
+    (w.x * w.x + w.z * w.z).sqrt()
 }
 
 #[cfg(test)]

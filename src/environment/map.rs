@@ -75,7 +75,7 @@ impl fmt::Debug for EnvironmentMap {
 /// `(u, v)` in `[0, 1)^2` of the unit direction `d` (need not be exactly unit).
 pub fn direction_to_uv(d: Vec3) -> Vec2 {
     // theta from atan2 keeps its accuracy near the poles, where acos loses it.
-    let theta = d.x.hypot(d.z).atan2(d.y);
+    let theta = (d.x * d.x + d.z * d.z).sqrt().atan2(d.y);
     let phi = (-d.z).atan2(d.x) + PI;
     let u = (phi / (2.0 * PI)).clamp(0.0, 1.0);
     Vec2::new(if u >= 1.0 { 0.0 } else { u }, (theta / PI).clamp(0.0, 1.0))
@@ -208,6 +208,17 @@ impl EnvironmentMap {
         let top = t[j0 + i0].lerp(t[j0 + i1], fx);
         let bottom = t[j1 + i0].lerp(t[j1 + i1], fx);
         top.lerp(bottom, fy)
+    }
+
+    /// Starts loading the texels a [`Self::lookup`] in cell `(i, j)` reads
+    /// (rows `j - 1` to `j + 1`, columns `i - 1` to `i + 1`), so that
+    /// their cache misses overlap other work; changes nothing else.
+    #[inline]
+    pub fn prefetch_around(&self, i: usize, j: usize) {
+        let first = i.saturating_sub(1);
+        for row in j.saturating_sub(1)..(j + 2).min(self.height) {
+            crate::math::prefetch::prefetch_lines(&self.texels[row * self.width + first], 2);
+        }
     }
 
     /// Radiance arriving from the unit direction `d`.

@@ -1,16 +1,20 @@
-//! The project's own environment map, made in code so that
+//! The project's own environment maps, made in code so that
 //! `part7-environment` runs with no download: a clear sky with a sun.
 //!
 //! - Sky (`y > 0`): blue at the zenith, brightening to a pale horizon,
 //!   `L = mix(zenith, horizon, (1 - y)^3)`, with a glow around the sun,
 //!   `+ glow exp(-angle / 0.15)`.
-//! - Ground (`y < 0`): a dim warm grey, blended into the horizon over the
-//!   first 3 degrees below it so that the lookup has no hard seam.
-//! - Sun: a disk of angular radius [`SUN_RADIUS`] and radiance [`SUN_RADIANCE`]
-//!   around [`sun_direction`] (35 degrees high), which gives an irradiance
-//!   of about `pi SUN_RADIUS^2 SUN_RADIANCE = 7.7` on a surface facing it,
-//!   against about 2 from the sky: sharp shadows, and a map whose power sits
-//!   in a few hundred of its 131,072 texels, where importance sampling pays.
+//! - Ground (`y < 0`): a dim warm grey (or black, [`Sky::ground`]),
+//!   blended into the horizon over the first 3 degrees below it so that
+//!   the lookup has no hard seam.
+//! - Sun: a disk of angular radius `r` and radiance `L_sun` around the
+//!   sun's direction. A surface facing it receives `pi r^2 L_sun` from it;
+//!   the built-in sky ([`SUN_RADIUS`], [`SUN_RADIANCE`], 35 degrees high)
+//!   gives 7.7, against about 2 from the sky: sharp shadows, and a map
+//!   whose power sits in a few hundred of its 131,072 texels, where
+//!   importance sampling pays. [`Sky::with_sun_radius`] keeps that
+//!   irradiance for a sun of any size (the real sun's radius is 0.27
+//!   degrees, a few texels of a 2k map: the hard case for a sampler).
 //!
 //! Not a physical sky model (for that see Preetham, Shirley and Smits,
 //! "A Practical Analytic Model for Daylight", SIGGRAPH 1999): its colours
@@ -24,15 +28,17 @@ use crate::math::Rgb;
 /// The name the built-in sky carries in messages.
 pub const BUILTIN_SKY: &str = "built-in: sky";
 
-/// Angular radius of the sun, radians (2 degrees: four times the real sun,
-/// so that a 512 x 256 map resolves it with a few texels across).
+/// Angular radius of the built-in sky's sun, radians (2 degrees: four
+/// times the real sun, so that a 512 x 256 map resolves it with a few
+/// texels across).
 pub const SUN_RADIUS: f32 = 0.035;
 
-/// Radiance of the sun's disk.
+/// Radiance of the built-in sky's sun disk.
 pub const SUN_RADIANCE: f32 = 2000.0;
 
-/// Unit vector towards the sun: 35 degrees above the horizon, 40 degrees
-/// from +Z towards +X (behind the course's camera, to its right).
+/// Unit vector towards the built-in sky's sun: 35 degrees above the
+/// horizon, 40 degrees from +Z towards +X (behind the course's camera, to
+/// its right).
 pub fn sun_direction() -> Vec3 {
     let (elevation, azimuth) = (35f32.to_radians(), 40f32.to_radians());
     Vec3::new(
@@ -42,29 +48,76 @@ pub fn sun_direction() -> Vec3 {
     )
 }
 
+/// A clear sky with a sun (this module's docs give the formulas).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sky {
+    /// Unit vector towards the sun.
+    pub sun: Vec3,
+    /// Angular radius of the sun's disk, radians.
+    pub sun_radius: f32,
+    /// Radiance of the sun's disk (times a warm white).
+    pub sun_radiance: f32,
+    /// Radiance below the horizon.
+    pub ground: Rgb,
+}
+
+impl Default for Sky {
+    /// The built-in sky.
+    fn default() -> Self {
+        Sky {
+            sun: sun_direction(),
+            sun_radius: SUN_RADIUS,
+            sun_radiance: SUN_RADIANCE,
+            ground: Rgb::new(0.2, 0.18, 0.15),
+        }
+    }
+}
+
+impl Sky {
+    /// The same sky with a sun of angular radius `radius` (radians), its
+    /// radiance scaled by `(r_old / r)^2` so that it lights a surface as
+    /// before.
+    pub fn with_sun_radius(self, radius: f32) -> Self {
+        Sky {
+            sun_radius: radius,
+            sun_radiance: self.sun_radiance * (self.sun_radius / radius).powi(2),
+            ..self
+        }
+    }
+
+    /// Radiance in the unit direction `d`.
+    pub fn radiance(&self, d: Vec3) -> Rgb {
+        let zenith = Rgb::new(0.18, 0.32, 0.75);
+        let horizon = Rgb::new(0.85, 0.9, 1.0);
+        let angle = d.dot(self.sun).clamp(-1.0, 1.0).acos();
+        let sky = |y: f32| {
+            let t = (1.0 - y.max(0.0)).powi(3);
+            zenith.lerp(horizon, t) + Rgb::new(1.0, 0.85, 0.6) * (2.0 * (-angle / 0.15).exp())
+        };
+        let below = 3f32.to_radians().sin();
+        let mut l = if d.y >= 0.0 {
+            sky(d.y)
+        } else {
+            self.ground.lerp(sky(0.0), (1.0 + d.y / below).max(0.0))
+        };
+        if angle <= self.sun_radius {
+            l += Rgb::new(1.0, 0.95, 0.85) * self.sun_radiance;
+        }
+        l
+    }
+
+    /// The sky as a `2 height x height` map named `source`.
+    pub fn map(&self, source: &str, height: usize) -> Result<EnvironmentMap, EnvironmentError> {
+        EnvironmentMap::from_fn(source, 2 * height, height, |d| self.radiance(d))
+    }
+}
+
 /// Radiance of the built-in sky in the unit direction `d`.
 pub fn sky_radiance(d: Vec3) -> Rgb {
-    let zenith = Rgb::new(0.18, 0.32, 0.75);
-    let horizon = Rgb::new(0.85, 0.9, 1.0);
-    let ground = Rgb::new(0.2, 0.18, 0.15);
-    let angle = d.dot(sun_direction()).clamp(-1.0, 1.0).acos();
-    let sky = |y: f32| {
-        let t = (1.0 - y.max(0.0)).powi(3);
-        zenith.lerp(horizon, t) + Rgb::new(1.0, 0.85, 0.6) * (2.0 * (-angle / 0.15).exp())
-    };
-    let below = 3f32.to_radians().sin();
-    let mut l = if d.y >= 0.0 {
-        sky(d.y)
-    } else {
-        ground.lerp(sky(0.0), (1.0 + d.y / below).max(0.0))
-    };
-    if angle <= SUN_RADIUS {
-        l += Rgb::new(1.0, 0.95, 0.85) * SUN_RADIANCE;
-    }
-    l
+    Sky::default().radiance(d)
 }
 
 /// The built-in sky as a 512 x 256 map.
 pub fn builtin_sky() -> Result<EnvironmentMap, EnvironmentError> {
-    EnvironmentMap::from_fn(BUILTIN_SKY, 512, 256, sky_radiance)
+    Sky::default().map(BUILTIN_SKY, 256)
 }

@@ -94,16 +94,22 @@ pub fn found_emission<I: Intersector>(
     prev: &PrevVertex,
 ) -> Rgb {
     let lights = &world.lights;
-    // What light sampling at `prev` would have done for `light`.
-    let sampled = |light: usize, hit: Option<LightHit>| match (direct, *prev) {
-        (DirectStrategy::Lights(d), PrevVertex::Scattering { p, .. }) if d.mis => {
+    // Light densities count only where light sampling at `prev` used MIS.
+    let mis_at = match (direct, *prev) {
+        (DirectStrategy::Lights(d), PrevVertex::Scattering { p, .. }) if d.mis => Some((d, p)),
+        _ => None,
+    };
+    // What light sampling at `prev` would have done for `light`, whose
+    // density of `ray.dir` is `pdf_li` (0 when unused).
+    let sampled = |light: usize, pdf_li: f32| match mis_at {
+        Some((d, _)) => {
             let strategy = d.strategy(lights, light);
             Emitter::Sampled {
-                light_pdf: strategy.probability * lights.lights[light].pdf_li(p, ray.dir, hit),
+                light_pdf: strategy.probability * pdf_li,
                 samples: strategy.samples,
             }
         }
-        _ => Emitter::Sampled {
+        None => Emitter::Sampled {
             light_pdf: 0.0,
             samples: 1,
         },
@@ -114,7 +120,10 @@ pub fn found_emission<I: Intersector>(
     match next {
         None => {
             for (i, light) in lights.infinite() {
-                le += light.escaped_radiance(ray.dir) * weight(sampled(i, None));
+                let (radiance, pdf_li) = light.escaped(ray.dir, mis_at.is_some());
+                if radiance != Rgb::ZERO {
+                    le += radiance * weight(sampled(i, pdf_li));
+                }
             }
         }
         Some(hit) => {
@@ -129,7 +138,11 @@ pub fn found_emission<I: Intersector>(
                         point: hit.p,
                         member,
                     };
-                    Some(sampled(light as usize, Some(at)))
+                    let light = light as usize;
+                    let pdf_li = mis_at.map_or(0.0, |(_, p)| {
+                        lights.lights[light].pdf_li(p, ray.dir, Some(at))
+                    });
+                    Some(sampled(light, pdf_li))
                 }
             };
             if let Some(emitter) = emitter {
@@ -171,7 +184,8 @@ pub fn found_emission<I: Intersector>(
             } else {
                 rect.radiance
             };
-            le += radiance * weight(sampled(i, None));
+            let pdf_li = mis_at.map_or(0.0, |(_, p)| lights.lights[i].pdf_li(p, ray.dir, None));
+            le += radiance * weight(sampled(i, pdf_li));
         }
     }
     le

@@ -172,6 +172,24 @@ impl Light {
         }
     }
 
+    /// [`Self::escaped_radiance`] and, if `with_pdf`, [`Self::pdf_li`] of
+    /// the unit direction `w` (else 0), as one look-up where the light
+    /// can (the density is 0 where the radiance is black).
+    pub fn escaped(&self, w: Vec3, with_pdf: bool) -> (Rgb, f32) {
+        match self {
+            Light::Environment(l) => l.escaped(w, with_pdf),
+            _ => {
+                let radiance = self.escaped_radiance(w);
+                let pdf = if with_pdf && radiance != Rgb::ZERO {
+                    self.pdf_li(Vec3::ZERO, w, None)
+                } else {
+                    0.0
+                };
+                (radiance, pdf)
+            }
+        }
+    }
+
     /// Radiant power, per channel; lights at infinity count what crosses a
     /// scene of radius `scene_radius`.
     pub fn power(&self, scene_radius: f32) -> Rgb {

@@ -29,15 +29,20 @@
 //! `p(u, v) = p(v) p(u | v) = f(u, v) / c`. A sample draws the row from the
 //! marginal with `u.y`, then the column from that row's conditional with
 //! `u.x`; the inverse maps a point back to the `u` that gives it.
+//!
+//! Layout: the rows' tables lie in two flat arrays (every row's cdf, then
+//! every row's guide), not in a vector per row: an environment map's are
+//! tens of megabytes read at random, and one allocation each can be backed
+//! by 2 MiB pages ([`crate::math::huge_pages`]) and holds no per-row
+//! headers between the tables.
 
 use crate::math::float::ONE_BELOW_ONE;
+use crate::math::huge_pages;
 use glam::Vec2;
 
 /// A piecewise-constant density on `[0, 1]`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Distribution1D {
-    /// The function's values (non-negative), one per cell.
-    func: Vec<f32>,
     /// `cdf[i]`: probability of the cells before `i`; `cdf[n] = 1`.
     cdf: Vec<f32>,
     /// Integral of the function over `[0, 1]` (0 when it was made uniform).
@@ -58,6 +63,90 @@ pub struct DistributionSample<T> {
     pub cell: usize,
 }
 
+/// Appends the tables of the distribution proportional to `func` (not
+/// empty): `n + 1` cumulative probabilities to `cdf`, `n` guide entries to
+/// `guide`. Returns the integral, or 0 if `func` had no positive finite
+/// value and the tables are the uniform distribution's.
+fn tabulate(func: &[f32], cdf: &mut Vec<f32>, guide: &mut Vec<u32>) -> f32 {
+    let n = func.len();
+    let clean = |f: f32| if f.is_finite() && f > 0.0 { f } else { 0.0 };
+    let total: f64 = func.iter().map(|&f| clean(f) as f64).sum();
+    let integral = (total / n as f64) as f32;
+    let uniform = !(total > 0.0 && total.is_finite() && integral > 0.0);
+    let start = cdf.len();
+    let mut running = 0.0f64;
+    cdf.push(0.0);
+    for &f in func {
+        running += if uniform { 1.0 } else { clean(f) as f64 };
+        cdf.push((running / if uniform { n as f64 } else { total }) as f32);
+    }
+    cdf[start + n] = 1.0;
+    let row = &cdf[start..];
+    guide.extend((0..n).map(|k| {
+        let u = k as f32 / n as f32;
+        (row.partition_point(|&c| c <= u).saturating_sub(1)).min(n - 1) as u32
+    }));
+    if uniform {
+        0.0
+    } else {
+        integral
+    }
+}
+
+/// The point `P^-1(u)` of the distribution whose tables are `cdf`
+/// (`n + 1` values) and `guide` (`n`), its density and its cell.
+fn sample_tables(cdf: &[f32], guide: &[u32], u: f32) -> DistributionSample<f32> {
+    let n = guide.len();
+    let u = u.clamp(0.0, 1.0);
+    // Last cell whose cdf is <= u: cdf[i] <= u < cdf[i + 1], from the
+    // guide's cell onwards (back first, in case rounding put the guide's
+    // `k / n` above `u`).
+    let mut i = guide[((u * n as f32) as usize).min(n - 1)] as usize;
+    while i > 0 && cdf[i] > u {
+        i -= 1;
+    }
+    while i + 1 < n && cdf[i + 1] <= u {
+        i += 1;
+    }
+    // Rounding can leave u on a cell of zero width: step back to one with mass.
+    let i = (0..=i)
+        .rev()
+        .find(|&k| cdf[k + 1] - cdf[k] > 0.0)
+        .unwrap_or(i);
+    let width = cdf[i + 1] - cdf[i];
+    let du = ((u - cdf[i]) / width).clamp(0.0, 1.0);
+    let x = ((i as f32 + du) / n as f32).min(ONE_BELOW_ONE);
+    DistributionSample {
+        x,
+        pdf: width * n as f32,
+        cell: i,
+    }
+}
+
+/// The cell of `x` in `[0, 1]` among `n` (1 belongs to the last cell).
+fn cell_of(x: f32, n: usize) -> usize {
+    ((x * n as f32) as usize).min(n - 1)
+}
+
+/// The density at `x` of the distribution whose cdf is `cdf`.
+fn pdf_tables(cdf: &[f32], x: f32) -> f32 {
+    if !(0.0..=1.0).contains(&x) {
+        return 0.0;
+    }
+    let n = cdf.len() - 1;
+    let i = cell_of(x, n);
+    (cdf[i + 1] - cdf[i]) * n as f32
+}
+
+/// The `u` that [`sample_tables`] maps to `x`.
+fn invert_tables(cdf: &[f32], x: f32) -> f32 {
+    let n = cdf.len() - 1;
+    let x = x.clamp(0.0, 1.0);
+    let i = cell_of(x, n);
+    let t = (x * n as f32 - i as f32).clamp(0.0, 1.0);
+    cdf[i] + t * (cdf[i + 1] - cdf[i])
+}
+
 impl Distribution1D {
     /// The distribution proportional to `func` (at least one cell).
     /// Negative or non-finite values count as 0; a function with no
@@ -68,50 +157,23 @@ impl Distribution1D {
     /// If `func` is empty.
     pub fn new(func: &[f32]) -> Self {
         assert!(!func.is_empty(), "a distribution needs at least one cell");
-        let n = func.len();
-        let clean = |f: f32| if f.is_finite() && f > 0.0 { f } else { 0.0 };
-        let mut func: Vec<f32> = func.iter().map(|&f| clean(f)).collect();
-        let total: f64 = func.iter().map(|&f| f as f64).sum();
-        let integral = (total / n as f64) as f32;
-        if !(total > 0.0 && total.is_finite() && integral > 0.0) {
-            func.iter_mut().for_each(|f| *f = 1.0);
-            return Self::new(&func).with_integral(0.0);
-        }
-        let mut cdf = Vec::with_capacity(n + 1);
-        let mut running = 0.0f64;
-        cdf.push(0.0);
-        for &f in &func {
-            running += f as f64;
-            cdf.push((running / total) as f32);
-        }
-        cdf[n] = 1.0;
-        let guide = (0..n)
-            .map(|k| {
-                let u = k as f32 / n as f32;
-                (cdf.partition_point(|&c| c <= u).saturating_sub(1)).min(n - 1) as u32
-            })
-            .collect();
+        let (mut cdf, mut guide) = (Vec::new(), Vec::new());
+        let integral = tabulate(func, &mut cdf, &mut guide);
         Distribution1D {
-            func,
             cdf,
             integral,
             guide,
         }
     }
 
-    fn with_integral(mut self, integral: f32) -> Self {
-        self.integral = integral;
-        self
-    }
-
     /// Number of cells.
     pub fn len(&self) -> usize {
-        self.func.len()
+        self.guide.len()
     }
 
     /// Whether the distribution has no cells (never: [`Self::new`] refuses that).
     pub fn is_empty(&self) -> bool {
-        self.func.is_empty()
+        self.guide.is_empty()
     }
 
     /// Integral of the (cleaned) function over `[0, 1]`; 0 if it had no
@@ -133,62 +195,35 @@ impl Distribution1D {
     /// The point `P^-1(u)` for `u` in `[0, 1)`, its density and its cell.
     /// The cell always has positive probability.
     pub fn sample(&self, u: f32) -> DistributionSample<f32> {
-        let n = self.len();
-        let u = u.clamp(0.0, 1.0);
-        // Last cell whose cdf is <= u: cdf[i] <= u < cdf[i + 1], from the
-        // guide's cell onwards (back first, in case rounding put the
-        // guide's `k / n` above `u`).
-        let mut i = self.guide[((u * n as f32) as usize).min(n - 1)] as usize;
-        while i > 0 && self.cdf[i] > u {
-            i -= 1;
-        }
-        while i + 1 < n && self.cdf[i + 1] <= u {
-            i += 1;
-        }
-        // Rounding can leave u on a cell of zero width: step back to one with mass.
-        let i = (0..=i)
-            .rev()
-            .find(|&k| self.cell_probability(k) > 0.0)
-            .unwrap_or(i);
-        let width = self.cell_probability(i);
-        let du = ((u - self.cdf[i]) / width).clamp(0.0, 1.0);
-        let x = ((i as f32 + du) / n as f32).min(ONE_BELOW_ONE);
-        DistributionSample {
-            x,
-            pdf: width * n as f32,
-            cell: i,
-        }
+        sample_tables(&self.cdf, &self.guide, u)
     }
 
     /// The cell of `x` in `[0, 1]` (1 belongs to the last cell).
     pub fn cell_of(&self, x: f32) -> usize {
-        let n = self.len();
-        ((x * n as f32) as usize).min(n - 1)
+        cell_of(x, self.len())
     }
 
     /// Density at `x` in `[0, 1]`, per unit length.
     pub fn pdf(&self, x: f32) -> f32 {
-        if !(0.0..=1.0).contains(&x) {
-            return 0.0;
-        }
-        self.cell_probability(self.cell_of(x)) * self.len() as f32
+        pdf_tables(&self.cdf, x)
     }
 
     /// The cumulative distribution `P(x)`: the `u` that [`Self::sample`]
     /// maps to `x` (for `x` in a cell of positive probability).
     pub fn invert(&self, x: f32) -> f32 {
-        let x = x.clamp(0.0, 1.0);
-        let i = self.cell_of(x);
-        let t = (x * self.len() as f32 - i as f32).clamp(0.0, 1.0);
-        self.cdf[i] + t * self.cell_probability(i)
+        invert_tables(&self.cdf, x)
     }
 }
 
 /// A piecewise-constant density on `[0, 1]^2`: `width x height` cells.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Distribution2D {
-    /// One distribution over the columns per row.
-    conditional: Vec<Distribution1D>,
+    width: usize,
+    /// Each row's conditional cdf over the columns (`width + 1` values a
+    /// row), row after row.
+    cdf: Vec<f32>,
+    /// Each row's guide table (`width` values a row), row after row.
+    guide: Vec<u32>,
     /// Distribution of the rows, proportional to each row's integral.
     marginal: Distribution1D,
 }
@@ -203,29 +238,59 @@ impl Distribution2D {
     /// If `width` or `height` is 0 or `func` has not `width * height` values.
     pub fn new(func: &[f32], width: usize, height: usize) -> Self {
         assert!(width > 0 && height > 0 && func.len() == width * height);
-        let conditional: Vec<Distribution1D> =
-            func.chunks(width).map(Distribution1D::new).collect();
-        let row_integrals: Vec<f32> = conditional.iter().map(|d| d.integral()).collect();
+        let mut cdf = Vec::with_capacity(height * (width + 1));
+        let mut guide = Vec::with_capacity(height * width);
+        huge_pages::advise(&cdf);
+        huge_pages::advise(&guide);
+        let row_integrals: Vec<f32> = func
+            .chunks(width)
+            .map(|row| tabulate(row, &mut cdf, &mut guide))
+            .collect();
         Distribution2D {
+            width,
+            cdf,
+            guide,
             marginal: Distribution1D::new(&row_integrals),
-            conditional,
         }
     }
 
     pub fn width(&self) -> usize {
-        self.conditional[0].len()
+        self.width
     }
 
     pub fn height(&self) -> usize {
-        self.conditional.len()
+        self.marginal.len()
+    }
+
+    /// Row `j`'s conditional cdf.
+    fn row_cdf(&self, j: usize) -> &[f32] {
+        &self.cdf[j * (self.width + 1)..(j + 1) * (self.width + 1)]
     }
 
     /// A point for `u` in `[0, 1)^2` (row from `u.y`, column from `u.x`)
     /// with its density per unit area; `cell` is the column, the row is
     /// `floor(x.y * height)`.
     pub fn sample(&self, u: Vec2) -> DistributionSample<Vec2> {
+        self.sample_hinted(u, |_, _| {})
+    }
+
+    /// [`Self::sample`], calling `hint(row, column)` once the row is drawn
+    /// and the guide table has given the column where the search starts
+    /// (the sample's column is that one or a few after it): a caller that
+    /// will read data of the sampled cell can start loading it there, so
+    /// that its cache misses overlap the search's.
+    pub fn sample_hinted(
+        &self,
+        u: Vec2,
+        hint: impl FnOnce(usize, usize),
+    ) -> DistributionSample<Vec2> {
         let row = self.marginal.sample(u.y);
-        let column = self.conditional[row.cell].sample(u.x);
+        let guide = &self.guide[row.cell * self.width..(row.cell + 1) * self.width];
+        hint(
+            row.cell,
+            guide[cell_of(u.x.clamp(0.0, 1.0), self.width)] as usize,
+        );
+        let column = sample_tables(self.row_cdf(row.cell), guide, u.x);
         DistributionSample {
             x: Vec2::new(column.x, row.x),
             pdf: row.pdf * column.pdf,
@@ -239,13 +304,16 @@ impl Distribution2D {
             return 0.0;
         }
         let row = self.marginal.cell_of(p.y);
-        self.marginal.pdf(p.y) * self.conditional[row].pdf(p.x)
+        self.marginal.pdf(p.y) * pdf_tables(self.row_cdf(row), p.x)
     }
 
     /// The `u` that [`Self::sample`] maps to `p`.
     pub fn invert(&self, p: Vec2) -> Vec2 {
         let row = self.marginal.cell_of(p.y.clamp(0.0, 1.0));
-        Vec2::new(self.conditional[row].invert(p.x), self.marginal.invert(p.y))
+        Vec2::new(
+            invert_tables(self.row_cdf(row), p.x),
+            self.marginal.invert(p.y),
+        )
     }
 }
 
@@ -354,6 +422,23 @@ mod tests {
             assert_eq!(d.integral(), 0.0);
             assert_eq!(d.pdf(0.2), 1.0);
             assert_eq!(d.sample(0.7).x, 0.7);
+        }
+    }
+
+    /// The hint sees the sample's row and the column its search starts
+    /// from, at or before the sampled one, and changes nothing.
+    #[test]
+    fn the_hint_names_the_row_and_where_the_search_starts() {
+        let f: Vec<f32> = (0..64 * 8).map(|k| ((k * 37) % 11) as f32).collect();
+        let d = Distribution2D::new(&f, 64, 8);
+        for k in 0..1000 {
+            let u = Vec2::new((k as f32 * 0.618_034).fract(), k as f32 / 1000.0);
+            let mut seen = None;
+            let s = d.sample_hinted(u, |row, column| seen = Some((row, column)));
+            let (row, column) = seen.expect("the hint is called");
+            assert_eq!(row, d.marginal.cell_of(s.x.y), "u {u}");
+            assert!(column <= s.cell, "u {u}: hint {column}, cell {}", s.cell);
+            assert_eq!(s, d.sample(u));
         }
     }
 
