@@ -17,7 +17,7 @@ fn atan_unit(t: f32) -> f32 {
         0.042_909_614,
         -0.075_289_64,
         0.106_562_64,
-        -0.142_088_99,
+        -0.142_089,
         0.199_935_51,
         -0.333_331_45,
         1.0,
@@ -36,10 +36,13 @@ pub fn atan2(y: f32, x: f32) -> f32 {
     use std::f32::consts::{FRAC_PI_2, PI};
     let (ax, ay) = (x.abs(), y.abs());
     let (small, large) = if ay > ax { (ax, ay) } else { (ay, ax) };
-    if !(large > 0.0) {
+    if large.is_nan() {
+        return f32::NAN;
+    }
+    if large == 0.0 {
         // The origin (the library gives +-0 or +-pi by the zeros' signs;
-        // a direction is never there), or a NaN.
-        return if large.is_nan() { f32::NAN } else { 0.0 };
+        // a direction is never there).
+        return 0.0;
     }
     let mut a = atan_unit(small / large);
     if ay > ax {
