@@ -171,7 +171,7 @@ impl EnvironmentLight {
                     .sample_hinted(u, |row, column| map.prefetch_around(column, row));
                 let wi = uv_to_direction(s.x);
                 let pdf = s.pdf / (2.0 * PI * PI * sin_theta(wi));
-                (wi, pdf, self.tables.map.lookup(s.x))
+                (wi, pdf, map.lookup(s.x))
             }
         };
         (pdf > 0.0 && pdf.is_finite()).then_some(LightSample {

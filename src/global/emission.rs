@@ -99,6 +99,11 @@ pub fn found_emission<I: Intersector>(
         (DirectStrategy::Lights(d), PrevVertex::Scattering { p, .. }) if d.mis => Some((d, p)),
         _ => None,
     };
+    // The density with which light sampling at `prev` picks `ray.dir`
+    // towards `light` (0 when unused).
+    let density = |light: usize, hit: Option<LightHit>| {
+        mis_at.map_or(0.0, |(_, p)| lights.lights[light].pdf_li(p, ray.dir, hit))
+    };
     // What light sampling at `prev` would have done for `light`, whose
     // density of `ray.dir` is `pdf_li` (0 when unused).
     let sampled = |light: usize, pdf_li: f32| match mis_at {
@@ -139,10 +144,7 @@ pub fn found_emission<I: Intersector>(
                         member,
                     };
                     let light = light as usize;
-                    let pdf_li = mis_at.map_or(0.0, |(_, p)| {
-                        lights.lights[light].pdf_li(p, ray.dir, Some(at))
-                    });
-                    Some(sampled(light, pdf_li))
+                    Some(sampled(light, density(light, Some(at))))
                 }
             };
             if let Some(emitter) = emitter {
@@ -184,8 +186,7 @@ pub fn found_emission<I: Intersector>(
             } else {
                 rect.radiance
             };
-            let pdf_li = mis_at.map_or(0.0, |(_, p)| lights.lights[i].pdf_li(p, ray.dir, None));
-            le += radiance * weight(sampled(i, pdf_li));
+            le += radiance * weight(sampled(i, density(i, None)));
         }
     }
     le
