@@ -26,7 +26,7 @@ fn a_correct_renderer_passes_every_check() {
     let bench = Bench::new();
     let binary = stand_in(bench.dir.path(), None, 1);
     let results = bench.run(binary, &battery(&[]));
-    assert_eq!(results.len(), 5);
+    assert_eq!(results.len(), 6);
     report_is_whole(&results, bench.dir.path());
     all_pass(results);
 }
@@ -74,9 +74,13 @@ fn the_false_alarm_rate_is_bounded() {
 #[test]
 fn a_mistake_fails_its_part_and_is_named() {
     let bench = Bench::new();
-    // Each with a telling check of its part: light sampling for part 3;
-    // all bounces (roulette) or the second alone (-o 0) for part 4.
+    // Each with a telling check of its part: the mesh for part 2; light
+    // sampling for part 3; all bounces (roulette) or the second alone
+    // (-o 0) for part 4.
     let cases = [
+        (Mistake::TraversalReturnsFirstHit, 2, 0),
+        (Mistake::BoxMissesRaysFromInside, 2, 0),
+        (Mistake::BarycentricsPermuted, 2, 0),
         (Mistake::NoCosine, 3, 1),
         (Mistake::LightSamplesNotAveraged, 3, 1),
         (Mistake::ShadowRayReachesLight, 3, 1),

@@ -3,7 +3,7 @@
 //! catalogued mistake, are the stage's ([`super::stage`]).
 //!
 //! Every check renders at [`SIZE`] with a few samples per pixel (the
-//! decision reads 16 x 16 pixel blocks). The checks of parts 3 and 4 take
+//! decision reads 16 x 16 pixel blocks). The checks of parts 2 to 4 take
 //! fewer than 32, so that adaptive sampling, on by default in a binary
 //! whose part 5 is written, never stops a pixel (its test runs every 32
 //! samples). Part 5's sets `-a` itself: a batch of 2 and a tolerance of
@@ -12,6 +12,14 @@
 //! part 5 moves the most pixels), a quarter of a second a render on 2
 //! cores; the reference writes the rate image as the course does
 //! ([`super::rates`]).
+//!
+//! Part 2's renders a mesh ([`CheckScene::Mesh`]) in direct light at `-m 1
+//! -s 4 -l 1`: a traversal that stops at the first hit or keeps the ray's
+//! `max_t` shows the surfaces behind, a box test that misses from inside
+//! drops the shadows (every shadow ray starts inside the root's box), and
+//! permuted barycentrics reshade the smooth balls. A finished binary has
+//! no flag for the normal shading of part 1, so part 1's mistakes are
+//! suspects of this check and of every later one of 3-1.
 //!
 //! The checks of assignment 3-2 ([`Check::assignment`]) render as its
 //! correct solution does: the staff's parts 1 to 5, the lamps as the
@@ -46,7 +54,7 @@ pub const SIZE: (u32, u32) = (480, 360);
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Check {
     pub part: u8,
-    /// The assignment whose binary it checks: 3-1 for parts 3 to 5, 3-2
+    /// The assignment whose binary it checks: 3-1 for parts 2 to 5, 3-2
     /// (whose parts 1 to 5 are the staff's library, its lamps the lights'
     /// own quads) for parts 6 to 8. The reference renders as its correct
     /// solution does.
@@ -127,6 +135,15 @@ fn every_check() -> Vec<Check> {
         environment: false,
     };
     let all = [
+        Check {
+            part: 2,
+            scene: CheckScene::Mesh,
+            name: "a mesh, direct light (-m 1 -l 1)",
+            function: "BVHAccel::intersect",
+            hemisphere: false,
+            spp: 4,
+            ..direct
+        },
         direct,
         Check {
             name: "direct light, light sampling (-l 4 -m 1)",
@@ -283,7 +300,7 @@ mod tests {
         assert_eq!(assignment_of(&[6, 8]), Some(Assignment::PathTracer2));
         assert_eq!(assignment_of(&[5, 6]), None);
         let parts = |a| battery_of(a).iter().map(|c| c.part).collect::<Vec<_>>();
-        assert_eq!(parts(Assignment::PathTracer1), [3, 3, 4, 4, 5]);
+        assert_eq!(parts(Assignment::PathTracer1), [2, 3, 3, 4, 4, 5]);
         assert_eq!(parts(Assignment::PathTracer2), [6, 7, 8]);
         assert_eq!(battery(&[]), battery_of(Assignment::PathTracer1));
     }

@@ -5,6 +5,10 @@
 //!   `CBspheres_lambertian.dae` where one is found (`--scenes DIR`, else
 //!   `CS184_SCENES`), else the project's own Cornell box
 //!   ([`builtin::cornell_box`]);
+//! - [`CheckScene::Mesh`] (part 2): the course's `CBbunny.dae` where one
+//!   is found, else the project's Cornell box with balls of triangles
+//!   ([`builtin::mesh_balls_box`]: its smooth normals show permuted
+//!   barycentrics, its nested balls a traversal that stops early);
 //! - [`CheckScene::Specular`] (part 6): always the project's own box of
 //!   mirror and glass, [`specular_box`]. The course's `CBspheres.dae`
 //!   holds a mirror ball and a glass ball only, and in a closed ball two
@@ -38,6 +42,9 @@ use crate::scene::{self, builtin, export_scene, Material, MaterialId, Scene};
 pub enum CheckScene {
     /// Diffuse balls in a Cornell box.
     Lambertian,
+    /// A mesh in a Cornell box: the course's bunny, or the project's
+    /// balls of triangles.
+    Mesh,
     /// A mirror ball, a glass ball, a glass cube and a glass pane in a
     /// Cornell box ([`specular_box`]).
     Specular,
@@ -49,10 +56,14 @@ pub enum CheckScene {
 /// The course scene [`CheckScene::Lambertian`] prefers.
 pub const COURSE_SCENE: &str = "CBspheres_lambertian.dae";
 
+/// The course scene [`CheckScene::Mesh`] prefers.
+pub const COURSE_MESH_SCENE: &str = "CBbunny.dae";
+
 impl CheckScene {
     /// Every one, in the battery's order.
-    pub const ALL: [CheckScene; 3] = [
+    pub const ALL: [CheckScene; 4] = [
         CheckScene::Lambertian,
+        CheckScene::Mesh,
         CheckScene::Specular,
         CheckScene::Sky,
     ];
@@ -61,6 +72,7 @@ impl CheckScene {
     fn file_name(self) -> &'static str {
         match self {
             CheckScene::Lambertian => "cornell-box.dae",
+            CheckScene::Mesh => "mesh-balls-box.dae",
             CheckScene::Specular => "specular-box.dae",
             CheckScene::Sky => "sky-balls.dae",
         }
@@ -70,8 +82,18 @@ impl CheckScene {
     fn own(self) -> Scene {
         match self {
             CheckScene::Lambertian => builtin::cornell_box(),
+            CheckScene::Mesh => builtin::mesh_balls_box(),
             CheckScene::Specular => specular_box(),
             CheckScene::Sky => sky_balls(),
+        }
+    }
+
+    /// The course's scene this one stands in for, used where found.
+    fn course_file(self) -> Option<&'static str> {
+        match self {
+            CheckScene::Lambertian => Some(COURSE_SCENE),
+            CheckScene::Mesh => Some(COURSE_MESH_SCENE),
+            CheckScene::Specular | CheckScene::Sky => None,
         }
     }
 
@@ -107,14 +129,14 @@ impl CheckScene {
     }
 
     /// The scene file to give the student and the scene as this project
-    /// loads it: for [`CheckScene::Lambertian`] the course's from
-    /// `scenes` (or `CS184_SCENES`) when there, else the project's own
-    /// written to `out/scenes/`.
+    /// loads it: for [`CheckScene::Lambertian`] and [`CheckScene::Mesh`]
+    /// the course's from `scenes` (or `CS184_SCENES`) when there, else the
+    /// project's own written to `out/scenes/`.
     pub fn file(self, scenes: Option<&Path>, out: &Path) -> Result<(PathBuf, Scene), String> {
-        if self == CheckScene::Lambertian {
+        if let Some(name) = self.course_file() {
             let from_env = std::env::var_os("CS184_SCENES").map(PathBuf::from);
             if let Some(dir) = scenes.map(Path::to_path_buf).or(from_env) {
-                let path = dir.join(COURSE_SCENE);
+                let path = dir.join(name);
                 if path.exists() {
                     let loaded = scene::load(&path).map_err(|e| e.to_string())?;
                     return Ok((path, loaded));

@@ -67,7 +67,8 @@ pub struct Bench {
 /// suspects'), and each image is rendered once. Every bench exports the
 /// same scenes.
 pub fn shared_stage(which: CheckScene, file: &Path, scene: Scene) -> &'static Stage {
-    static STAGES: [OnceLock<Stage>; 3] = [OnceLock::new(), OnceLock::new(), OnceLock::new()];
+    static STAGES: [OnceLock<Stage>; CheckScene::ALL.len()] =
+        [const { OnceLock::new() }; CheckScene::ALL.len()];
     let index = CheckScene::ALL.iter().position(|&s| s == which).unwrap();
     STAGES[index].get_or_init(|| which.stage(file, scene, true).unwrap())
 }
