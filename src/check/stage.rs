@@ -83,20 +83,35 @@ impl Stage {
     /// image's fractions. Neither depends on `threads`.
     pub fn render(&self, check: &Check, mistakes: Mistakes, seed: u64, threads: usize) -> Render {
         let Some(kept) = &self.kept else {
-            return self.render_anew(check, mistakes, seed, threads);
+            return self.render_anew(check, mistakes, seed, threads, 1.0);
         };
         let key = format!("{check:?} {mistakes:?} {seed}");
         if let Some(render) = kept.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
             return render.clone();
         }
-        let render = self.render_anew(check, mistakes, seed, threads);
+        let render = self.render_anew(check, mistakes, seed, threads, 1.0);
         kept.lock()
             .unwrap_or_else(|e| e.into_inner())
             .insert(key, render.clone());
         render
     }
 
-    fn render_anew(&self, check: &Check, mistakes: Mistakes, seed: u64, threads: usize) -> Render {
+    /// What a correct solution writes for `check` with `seed` were its
+    /// radiance `gain` times the right one (before the tone map): a
+    /// renderer off by a constant factor, to measure the smallest factor
+    /// a check detects (its power, docs/15-check.md). Never kept.
+    pub fn render_with_gain(&self, check: &Check, seed: u64, threads: usize, gain: f32) -> Render {
+        self.render_anew(check, Mistakes::NONE, seed, threads, gain)
+    }
+
+    fn render_anew(
+        &self,
+        check: &Check,
+        mistakes: Mistakes,
+        seed: u64,
+        threads: usize,
+        gain: f32,
+    ) -> Render {
         let exact = CourseExact {
             assignment: check.assignment,
         };
@@ -128,7 +143,12 @@ impl Stage {
             adaptive: check.adaptive,
         };
         let rendered = exact.render(view, &self.accel, &tracer, &sampling);
-        let display: Vec<Rgb> = rendered.film.pixels.iter().map(|&p| tone_map(p)).collect();
+        let display: Vec<Rgb> = rendered
+            .film
+            .pixels
+            .iter()
+            .map(|&p| tone_map(p * gain))
+            .collect();
         let rates = check.adaptive.map(|_| {
             let taken: Vec<f64> = rendered
                 .estimates

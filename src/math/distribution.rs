@@ -69,10 +69,13 @@ pub struct DistributionSample<T> {
 /// value and the tables are the uniform distribution's.
 fn tabulate(func: &[f32], cdf: &mut Vec<f32>, guide: &mut Vec<u32>) -> f32 {
     let n = func.len();
-    let clean = |f: f32| if f.is_finite() && f > 0.0 { f } else { 0.0 };
+    let clean = |f: f32| if f.is_finite() { f.max(0.0) } else { 0.0 };
+    // A sum of finite f32 values in f64 is finite, and their mean is at
+    // most the largest: the integral is finite, and 0 only where every
+    // value is 0 or the mean underflows f32.
     let total: f64 = func.iter().map(|&f| clean(f) as f64).sum();
     let integral = (total / n as f64) as f32;
-    let uniform = !(total > 0.0 && total.is_finite() && integral > 0.0);
+    let uniform = integral == 0.0;
     let start = cdf.len();
     let mut running = 0.0f64;
     cdf.push(0.0);
