@@ -24,18 +24,19 @@ use pathtracer::mistakes::Mistake;
 const THREE_TWO: Assignment = Assignment::PathTracer2;
 
 /// A correct 3-2 binary passes every check, decided each at the 3-2
-/// battery's rate (`ALPHA / 3`); the report holds them.
+/// battery's rate (`ALPHA / 4`); the report holds them.
 #[test]
 fn a_correct_3_2_renderer_passes_parts_6_to_8() {
     let bench = Bench::new();
     let checks = battery_of(THREE_TWO);
     assert_eq!(
         checks.iter().map(|c| c.part).collect::<Vec<_>>(),
-        [6, 7, 8],
+        [6, 6, 7, 8],
         "the 3-2 battery"
     );
     assert_eq!(checks[0].scene, CheckScene::Specular);
-    assert_eq!(checks[1].scene, CheckScene::Sky);
+    assert_eq!(checks[1].scene, CheckScene::Microfacet);
+    assert_eq!(checks[2].scene, CheckScene::Sky);
     let binary = stand_in_of(THREE_TWO, bench.dir.path(), None, 1);
     let results = bench.run(binary, &checks);
     report_is_whole(&results, bench.dir.path());
@@ -47,7 +48,10 @@ fn a_correct_3_2_renderer_passes_parts_6_to_8() {
 /// misfit 0.4 a cell or less, the next one's 2.4 or more).
 fn each_fails_and_is_named_first(part: u8, mistakes: &[Mistake]) {
     let bench = Bench::new();
-    let check = battery(&[part])[0];
+    let check = battery(&[part])
+        .into_iter()
+        .find(|c| c.suspects().contains(&mistakes[0]))
+        .expect("a check of the part suspects it");
     for &mistake in mistakes {
         let binary = stand_in_of(THREE_TWO, bench.dir.path(), Some(mistake), 3);
         let results = bench.run(binary, &[check]);
@@ -86,6 +90,17 @@ fn part_6_mistakes_fail_and_are_named_first() {
             Mistake::NoTotalInternalReflection,
             Mistake::SchlickR0NotSquared,
         ],
+    );
+}
+
+/// Part 6's rough metal: `microfacet-no-4` (4 times too bright) and
+/// `microfacet-pdf-no-jacobian` (what the balls reflect darker, their
+/// highlights unchanged) on the box of copper balls at `-m 2`.
+#[test]
+fn microfacet_mistakes_fail_and_are_named_first() {
+    each_fails_and_is_named_first(
+        6,
+        &[Mistake::MicrofacetNoFour, Mistake::MicrofacetPdfNoJacobian],
     );
 }
 
@@ -139,7 +154,7 @@ fn a_binary_without_a_lens_or_a_map_skips_parts_7_and_8() {
 /// then 30 correct renders at new seeds, counting those over the
 /// threshold at `alpha` = 0.05 (a correct rule exceeds it in at most 5 %:
 /// 8 or more of 30 happen with probability 2e-4 at 5 %) and at the
-/// battery's `ALPHA / 3`; then each of the part's mistakes at 5 seeds,
+/// battery's `ALPHA / 4`; then each of the part's mistakes at 5 seeds,
 /// counting those over the battery's threshold (asserted: 4 of 5 or more).
 #[test]
 #[ignore = "a measurement, minutes long"]

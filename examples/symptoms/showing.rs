@@ -119,7 +119,9 @@ pub fn showing(m: Mistake) -> Showing {
         | RefractionRatioInverted
         | NoEtaSquared
         | NoTotalInternalReflection
-        | SchlickR0NotSquared => Showing {
+        | SchlickR0NotSquared
+        | MicrofacetNoFour
+        | MicrofacetPdfNoJacobian => Showing {
             spp: 128,
             ..paths(Stage::MaterialsBox, 5)
         },

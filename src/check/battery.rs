@@ -25,7 +25,10 @@
 //! correct solution does: the staff's parts 1 to 5, the lamps as the
 //! lights' own quads ([`crate::course::CourseExact::lamps`]). Part 6's renders the box of
 //! mirror and glass ([`CheckScene::Specular`]) at `-m 6 -s 4` (a path
-//! through the cube meets several glass faces before a wall), part 7's
+//! through the cube meets several glass faces before a wall), and the
+//! rough metal ([`CheckScene::Microfacet`]) at `-m 2 -s 4`, where each
+//! ball shows the lamp's highlight (`f`, light sampled) and the lit walls
+//! (the bounce `sample_f` draws), part 7's
 //! the balls under the project's sky ([`CheckScene::Sky`], `-e`) at
 //! `-m 1 -s 4 -l 4`, part 8's the diffuse box at `-m 1 -s 4` through a lens of radius 0.5 focused at
 //! 3.8, the box's open front, whose edges against the black outside lie
@@ -42,6 +45,7 @@ use super::scenes::CheckScene;
 use crate::adaptive::Adaptive;
 use crate::course::Assignment;
 use crate::depth_of_field::ThinLens;
+use crate::mistakes::materials::{MATERIAL_MISTAKES, MICROFACET_MISTAKES};
 use crate::mistakes::Mistake;
 
 pub use super::stage::{Render, Stage};
@@ -196,6 +200,17 @@ fn every_check() -> Vec<Check> {
             ..direct
         },
         Check {
+            part: 6,
+            assignment: Assignment::PathTracer2,
+            scene: CheckScene::Microfacet,
+            name: "rough metal (-m 2)",
+            function: "MicrofacetBSDF::f / sample_f",
+            hemisphere: false,
+            max_depth: 2,
+            spp: 4,
+            ..direct
+        },
+        Check {
             part: 7,
             assignment: Assignment::PathTracer2,
             scene: CheckScene::Sky,
@@ -279,7 +294,11 @@ impl Check {
                 (Assignment::PathTracer1, part) => {
                     part <= self.part && (part != 5 || self.adaptive.is_some())
                 }
-                (Assignment::PathTracer2, 6) => self.scene == CheckScene::Specular,
+                (Assignment::PathTracer2, 6) => match self.scene {
+                    CheckScene::Specular => MATERIAL_MISTAKES.contains(m),
+                    CheckScene::Microfacet => MICROFACET_MISTAKES.contains(m),
+                    _ => false,
+                },
                 (Assignment::PathTracer2, 7) => self.environment,
                 (Assignment::PathTracer2, 8) => self.lens.is_some(),
                 (Assignment::PathTracer2, _) => false,
@@ -301,7 +320,7 @@ mod tests {
         assert_eq!(assignment_of(&[5, 6]), None);
         let parts = |a| battery_of(a).iter().map(|c| c.part).collect::<Vec<_>>();
         assert_eq!(parts(Assignment::PathTracer1), [2, 3, 3, 4, 4, 5]);
-        assert_eq!(parts(Assignment::PathTracer2), [6, 7, 8]);
+        assert_eq!(parts(Assignment::PathTracer2), [6, 6, 7, 8]);
         assert_eq!(battery(&[]), battery_of(Assignment::PathTracer1));
     }
 
@@ -321,5 +340,6 @@ mod tests {
         let flags = lens.flags(2).join(" ");
         assert!(flags.ends_with("-b 0.5 -d 3.8"), "{flags}");
         assert_eq!(battery(&[6])[0].suspects().len(), 5);
+        assert_eq!(battery(&[6])[1].suspects(), MICROFACET_MISTAKES);
     }
 }

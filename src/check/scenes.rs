@@ -20,6 +20,9 @@
 //!   single glass pane across the box's opening (light crosses it once,
 //!   so the starter's `eta^2` shows: what lies behind it is
 //!   `ior^2 = 2.25` times as bright in a correct 3-2 solution);
+//! - [`CheckScene::Microfacet`] (part 6's rough metal): the course's
+//!   `CBspheres_microfacet_al_ag.dae` where one is found, else the
+//!   project's Cornell box with copper balls ([`microfacet_box`]);
 //! - [`CheckScene::Sky`] (part 7): two diffuse balls on a floor, no
 //!   light but the sky of [`super::sky`], written beside the scene as
 //!   `sky-balls.exr` and given with `-e`.
@@ -48,6 +51,9 @@ pub enum CheckScene {
     /// A mirror ball, a glass ball, a glass cube and a glass pane in a
     /// Cornell box ([`specular_box`]).
     Specular,
+    /// Rough metal balls in a Cornell box ([`microfacet_box`]), or the
+    /// course's aluminium and silver ones.
+    Microfacet,
     /// Diffuse balls on a floor lit by an environment map alone
     /// ([`sky_balls`], [`super::sky`]).
     Sky,
@@ -59,12 +65,16 @@ pub const COURSE_SCENE: &str = "CBspheres_lambertian.dae";
 /// The course scene [`CheckScene::Mesh`] prefers.
 pub const COURSE_MESH_SCENE: &str = "CBbunny.dae";
 
+/// The course scene [`CheckScene::Microfacet`] prefers.
+pub const COURSE_MICROFACET_SCENE: &str = "CBspheres_microfacet_al_ag.dae";
+
 impl CheckScene {
     /// Every one, in the battery's order.
-    pub const ALL: [CheckScene; 4] = [
+    pub const ALL: [CheckScene; 5] = [
         CheckScene::Lambertian,
         CheckScene::Mesh,
         CheckScene::Specular,
+        CheckScene::Microfacet,
         CheckScene::Sky,
     ];
 
@@ -74,6 +84,7 @@ impl CheckScene {
             CheckScene::Lambertian => "cornell-box.dae",
             CheckScene::Mesh => "mesh-balls-box.dae",
             CheckScene::Specular => "specular-box.dae",
+            CheckScene::Microfacet => "microfacet-box.dae",
             CheckScene::Sky => "sky-balls.dae",
         }
     }
@@ -84,6 +95,7 @@ impl CheckScene {
             CheckScene::Lambertian => builtin::cornell_box(),
             CheckScene::Mesh => builtin::mesh_balls_box(),
             CheckScene::Specular => specular_box(),
+            CheckScene::Microfacet => microfacet_box(),
             CheckScene::Sky => sky_balls(),
         }
     }
@@ -93,6 +105,7 @@ impl CheckScene {
         match self {
             CheckScene::Lambertian => Some(COURSE_SCENE),
             CheckScene::Mesh => Some(COURSE_MESH_SCENE),
+            CheckScene::Microfacet => Some(COURSE_MICROFACET_SCENE),
             CheckScene::Specular | CheckScene::Sky => None,
         }
     }
@@ -129,8 +142,8 @@ impl CheckScene {
     }
 
     /// The scene file to give the student and the scene as this project
-    /// loads it: for [`CheckScene::Lambertian`] and [`CheckScene::Mesh`]
-    /// the course's from `scenes` (or `CS184_SCENES`) when there, else the
+    /// loads it: for [`CheckScene::Lambertian`], [`CheckScene::Mesh`] and
+    /// [`CheckScene::Microfacet`] the course's from `scenes` (or `CS184_SCENES`) when there, else the
     /// project's own written to `out/scenes/`.
     pub fn file(self, scenes: Option<&Path>, out: &Path) -> Result<(PathBuf, Scene), String> {
         if let Some(name) = self.course_file() {
@@ -167,9 +180,10 @@ pub const CUBE_SIDE: f32 = 0.3;
 pub const PANE_X: (f32, f32) = (0.02, 0.98);
 pub const PANE_Y: (f32, f32) = (0.8, 1.48);
 
-/// The box of part 6's check: [`builtin::materials_box`] without its
-/// copper ball (no mistake of the catalogue is a microfacet one, and a
-/// student may check mirror and glass before writing it), with a glass
+/// The box of part 6's check of mirror and glass:
+/// [`builtin::materials_box`] without its copper ball (a student may
+/// check mirror and glass before writing the rough metal, which has a
+/// check and a scene of its own, [`microfacet_box`]), with a glass
 /// cube of side [`CUBE_SIDE`] turned 45 degrees about `y` at
 /// [`CUBE_CENTRE`] (between the balls, in front) and a glass pane
 /// ([`PANE_X`], [`PANE_Y`]) facing the camera across the opening. Every
@@ -249,6 +263,29 @@ pub fn specular_box() -> Scene {
     scene.mesh.normals =
         scene::normals::area_weighted_vertex_normals(&scene.mesh.positions, &scene.mesh.triangles);
     scene.source = "check: specular-box".into();
+    scene
+}
+
+/// The box of part 6's check of the rough metal: [`builtin::cornell_box`]
+/// with its balls made of the materials box's copper, Beckmann roughness
+/// 0.15 (left, back) and 0.4 (right, front): a sharp and a broad lobe,
+/// each reflecting the lit walls (what a wrong `sample_f` changes) and
+/// the lamp's highlight (what a wrong `f` changes).
+pub fn microfacet_box() -> Scene {
+    let (eta, k) = builtin::materials_box()
+        .materials
+        .into_iter()
+        .find_map(|m| match m {
+            Material::Microfacet { eta, k, .. } => Some((eta, k)),
+            _ => None,
+        })
+        .expect("the materials box has copper");
+    let mut scene = builtin::cornell_box();
+    let balls: Vec<MaterialId> = scene.spheres.iter().map(|s| s.material).collect();
+    for (material, alpha) in balls.into_iter().zip([0.15, 0.4]) {
+        scene.materials[material as usize] = Material::Microfacet { alpha, eta, k };
+    }
+    scene.source = "check: microfacet-box".into();
     scene
 }
 

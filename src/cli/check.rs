@@ -168,7 +168,7 @@ mod tests {
                 .map_err(|e| e.to_string())
         };
         assert_eq!(parts("--student s"), Ok(vec![2, 3, 3, 4, 4, 5]));
-        assert_eq!(parts("--student s --assignment 3-2"), Ok(vec![6, 7, 8]));
+        assert_eq!(parts("--student s --assignment 3-2"), Ok(vec![6, 6, 7, 8]));
         assert_eq!(parts("--student s --part 8"), Ok(vec![8]));
         assert_eq!(
             parts("--student s --part 3 --assignment 3-1"),

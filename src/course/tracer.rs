@@ -40,7 +40,7 @@ use glam::Vec3;
 use crate::global::CONTINUE_PROBABILITY;
 use crate::intersect::{Hit, Intersector, Ray};
 use crate::lights::{EmitterRole, Light, LightPdf};
-use crate::materials::{Bsdf, BsdfSample};
+use crate::materials::{Bsdf, BsdfSample, Density};
 use crate::math::warp::{sample_uniform_hemisphere, uniform_hemisphere_pdf};
 use crate::math::Rgb;
 use crate::mistakes::{self, Mistake, Mistakes};
@@ -114,28 +114,42 @@ impl StarterTracer {
 
     /// `bsdf->f(wo, wi)`.
     fn f(&self, bsdf: &Bsdf, wo: Vec3, wi: Vec3) -> Rgb {
-        let f = bsdf.f(wo, wi);
-        if self.mistakes.has(Mistake::BrdfIsAlbedo) && matches!(bsdf, Bsdf::Diffuse(_)) {
-            f * std::f32::consts::PI
-        } else {
-            f
+        bsdf.f(wo, wi) * self.f_factor(bsdf)
+    }
+
+    /// What a student's `f` is times the right one: `pi` for a diffuse
+    /// BRDF taken as its albedo, 4 for a microfacet one without its 4.
+    fn f_factor(&self, bsdf: &Bsdf) -> f32 {
+        match bsdf {
+            Bsdf::Diffuse(_) if self.mistakes.has(Mistake::BrdfIsAlbedo) => std::f32::consts::PI,
+            Bsdf::Conductor(_) if self.mistakes.has(Mistake::MicrofacetNoFour) => 4.0,
+            _ => 1.0,
         }
     }
 
-    /// The factor a bounce multiplies the light it brings by:
-    /// `f cos / pdf`.
-    fn bounce_weight(&self, bsdf: &Bsdf, sample: &BsdfSample) -> Rgb {
-        let brdf_is_albedo =
-            self.mistakes.has(Mistake::BrdfIsAlbedo) && matches!(bsdf, Bsdf::Diffuse(_));
-        let f = if brdf_is_albedo {
-            sample.f * std::f32::consts::PI
-        } else {
-            sample.f
+    /// The factor a bounce from `wo` multiplies the light it brings by:
+    /// `f cos / pdf`. A microfacet sample's pdf without its Jacobian is
+    /// `p(h) = 4 (wo.h) p(wi)`.
+    fn bounce_weight(&self, bsdf: &Bsdf, wo: Vec3, sample: &BsdfSample) -> Rgb {
+        let f = sample.f * self.f_factor(bsdf);
+        let density = match (bsdf, sample.density) {
+            (Bsdf::Conductor(_), Density::SolidAngle(p))
+                if self.mistakes.has(Mistake::MicrofacetPdfNoJacobian) =>
+            {
+                let h = (wo + sample.wi).normalize_or_zero();
+                Density::SolidAngle(p * 4.0 * wo.dot(h))
+            }
+            (_, density) => density,
         };
         if self.mistakes.has(Mistake::ThroughputWithoutCosPdf) {
             f
         } else {
-            BsdfSample { f, ..*sample }.weight()
+            BsdfSample {
+                f,
+                density,
+                ..*sample
+            }
+            .weight()
         }
     }
 
@@ -389,6 +403,6 @@ impl StarterTracer {
         } else {
             q
         };
-        l + self.bounce_weight(&point.bsdf, &sample) * incoming / q_divided
+        l + self.bounce_weight(&point.bsdf, point.wo, &sample) * incoming / q_divided
     }
 }

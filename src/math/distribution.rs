@@ -87,7 +87,8 @@ fn tabulate(func: &[f32], cdf: &mut Vec<f32>, guide: &mut Vec<u32>) -> f32 {
     let row = &cdf[start..];
     guide.extend((0..n).map(|k| {
         let u = k as f32 / n as f32;
-        (row.partition_point(|&c| c <= u).saturating_sub(1)).min(n - 1) as u32
+        // `cdf[n] = 1 > u`, so the last cell with `cdf <= u` is below n.
+        row.partition_point(|&c| c <= u).saturating_sub(1) as u32
     }));
     if uniform {
         0.0
@@ -104,7 +105,7 @@ fn sample_tables(cdf: &[f32], guide: &[u32], u: f32) -> DistributionSample<f32> 
     // Last cell whose cdf is <= u: cdf[i] <= u < cdf[i + 1], from the
     // guide's cell onwards (back first, in case rounding put the guide's
     // `k / n` above `u`).
-    let mut i = guide[((u * n as f32) as usize).min(n - 1)] as usize;
+    let mut i = guide[cell_of(u, n)] as usize;
     while i > 0 && cdf[i] > u {
         i -= 1;
     }

@@ -217,6 +217,20 @@ impl Mistake {
                 "Schlick's R0 = ((1 - ior) / (1 + ior))^2 taken without the square",
                 "glass reflects about five times too much near normal incidence: strong reflections of the lamp and the walls on glass",
             ),
+            Mistake::MicrofacetNoFour => (
+                "microfacet-no-4",
+                6,
+                "MicrofacetBSDF::f",
+                "the BRDF's denominator without its 4: F G D / (cos_o cos_i) for F G D / (4 cos_o cos_i)",
+                "the metal 4 times too bright, in its highlights and in what it reflects (much of it clips to white)",
+            ),
+            Mistake::MicrofacetPdfNoJacobian => (
+                "microfacet-pdf-no-jacobian",
+                6,
+                "MicrofacetBSDF::sample_f",
+                "the half vector's density D(h) cos(theta_h) returned as wi's, without the 1 / (4 wo.h) of reflecting about h",
+                "what the metal reflects too dark by 4 wo.h (up to 4 times, at its middle; brighter only past wo.h = 1/4); its highlights from the lamp, light sampled, unchanged",
+            ),
             Mistake::EnvPdfNoSin => (
                 "env-pdf-no-sin",
                 7,

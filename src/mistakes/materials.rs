@@ -1,6 +1,8 @@
 //! The starter's `MirrorBSDF`, `RefractionBSDF` and `GlassBSDF::sample_f`
 //! as a student writes them with the catalogue's mistakes of part 6:
 //! called by [`crate::course::StarterTracer`] only when one is chosen.
+//! The rough metal's two ([`MICROFACET_MISTAKES`]) are a factor each, on
+//! `f` and on the sample's pdf, in the tracer itself.
 //!
 //! The right ones are [`crate::materials::Mirror`], [`Refraction`] and
 //! [`Glass`]; these follow them step by step, with the mistaken step where
@@ -13,7 +15,7 @@ use crate::materials::specular::{reflect, refract};
 use crate::materials::{fresnel, Bsdf, BsdfSample, Density, FresnelModel, Glass, Refraction};
 use crate::math::Rgb;
 
-/// Part 6's mistakes.
+/// Part 6's mistakes of mirror and glass.
 pub const MATERIAL_MISTAKES: [Mistake; 5] = [
     Mistake::ReflectWrongAxis,
     Mistake::RefractionRatioInverted,
@@ -21,6 +23,11 @@ pub const MATERIAL_MISTAKES: [Mistake; 5] = [
     Mistake::NoTotalInternalReflection,
     Mistake::SchlickR0NotSquared,
 ];
+
+/// Part 6's mistakes of the rough metal, which [`crate::course::StarterTracer`]
+/// makes where it evaluates and weights a BSDF.
+pub const MICROFACET_MISTAKES: [Mistake; 2] =
+    [Mistake::MicrofacetNoFour, Mistake::MicrofacetPdfNoJacobian];
 
 /// The sample a student's delta BSDF draws with `mistakes`, or `None` when
 /// no material mistake is chosen or `bsdf` is not a delta BSDF (the right

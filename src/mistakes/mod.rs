@@ -69,12 +69,14 @@ pub enum Mistake {
     AdaptiveNotSquareRooted,
     AdaptiveCountNotUpdated,
     AdaptivePopulationVariance,
-    // Part 6: mirror and glass.
+    // Part 6: mirror, glass and the rough conductor.
     ReflectWrongAxis,
     RefractionRatioInverted,
     NoEtaSquared,
     NoTotalInternalReflection,
     SchlickR0NotSquared,
+    MicrofacetNoFour,
+    MicrofacetPdfNoJacobian,
     // Part 7: environment light.
     EnvPdfNoSin,
     EnvPdfNoJacobian,
@@ -102,7 +104,7 @@ pub struct MistakeInfo {
 
 impl Mistake {
     /// Every mistake, in the catalogue's order (by part).
-    pub const ALL: [Mistake; 36] = [
+    pub const ALL: [Mistake; 38] = [
         Mistake::FovFullAngle,
         Mistake::FovInDegrees,
         Mistake::RayInCameraSpace,
@@ -133,6 +135,8 @@ impl Mistake {
         Mistake::NoEtaSquared,
         Mistake::NoTotalInternalReflection,
         Mistake::SchlickR0NotSquared,
+        Mistake::MicrofacetNoFour,
+        Mistake::MicrofacetPdfNoJacobian,
         Mistake::EnvPdfNoSin,
         Mistake::EnvPdfNoJacobian,
         Mistake::EnvMapUFlipped,

@@ -114,6 +114,23 @@ fn a_function_without_mass_is_uniform() {
     }
 }
 
+/// Just below a guide boundary, rounding can start the search past the
+/// sample's cell: with 20 equal cells, `u` = 0.84999996 (the float below
+/// 0.85) gives `fl(20 u) = 17`, and the guide's cell 17 begins at `cdf =
+/// 0.85 > u`. The search must step back to cell 16 (found by a search
+/// over every n below 40 and every boundary; a back walk that never runs,
+/// or runs the wrong way, fails here).
+#[test]
+fn a_sample_just_below_a_guide_boundary_steps_back() {
+    let d = Distribution1D::new(&[1.0; 20]);
+    let u = f32::from_bits(0.85f32.to_bits() - 1);
+    assert_eq!((u * 20.0) as usize, 17, "the guide starts at cell 17");
+    let s = d.sample(u);
+    assert_eq!(s.cell, 16);
+    assert!(s.x < 0.85 && s.x > 0.8499, "{}", s.x);
+    assert!((s.pdf - 1.0).abs() < 1e-5, "{}", s.pdf);
+}
+
 /// The hint sees the sample's row and the column its search starts
 /// from, at or before the sampled one, and changes nothing.
 #[test]
