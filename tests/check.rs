@@ -136,7 +136,8 @@ fn measure_the_power_of_each_check() {
 
 /// A student with a catalogued mistake fails the checks of its part, and
 /// the mistake is named among those that fit, first or tied with one whose
-/// image cannot be told apart at these settings.
+/// image cannot be told apart at these settings; where its image has a
+/// pattern of single pixels, the failure names it.
 #[test]
 fn a_mistake_fails_its_part_and_is_named() {
     let bench = Bench::new();
@@ -144,22 +145,27 @@ fn a_mistake_fails_its_part_and_is_named() {
     // sampling for part 3; all bounces (roulette) or the second alone
     // (-o 0) for part 4.
     let cases = [
-        (Mistake::TraversalReturnsFirstHit, 2, 0),
-        (Mistake::BoxMissesRaysFromInside, 2, 0),
-        (Mistake::BarycentricsPermuted, 2, 0),
-        (Mistake::NoCosine, 3, 1),
-        (Mistake::LightSamplesNotAveraged, 3, 1),
-        (Mistake::ShadowRayReachesLight, 3, 1),
-        (Mistake::RouletteNotDivided, 4, 0),
-        (Mistake::NoAccumulationSumsAll, 4, 1),
+        (Mistake::TraversalReturnsFirstHit, 2, 0, None),
+        (Mistake::BoxMissesRaysFromInside, 2, 0, None),
+        (Mistake::BarycentricsPermuted, 2, 0, None),
+        (Mistake::NoCosine, 3, 1, None),
+        (Mistake::LightSamplesNotAveraged, 3, 1, None),
+        (Mistake::ShadowRayReachesLight, 3, 1, None),
+        (Mistake::ShadowAcne, 3, 1, Some("acne:")),
+        (Mistake::RouletteNotDivided, 4, 0, None),
+        (Mistake::NoAccumulationSumsAll, 4, 1, None),
     ];
-    for (mistake, part, index) in cases {
+    for (mistake, part, index, pattern) in cases {
         let check = battery(&[part])[index];
         let binary = stand_in(bench.dir.path(), Some(mistake), 3);
         let results = bench.run(binary, &[check]);
         let named = results.iter().any(|r| match &r.outcome {
             Outcome::Fail { suspects, what, .. } => {
                 eprintln!("{mistake}: {}: {what}; {:?}", r.check.name, &suspects[..3]);
+                assert!(
+                    pattern.is_none_or(|p| what.contains(p)),
+                    "{mistake}: {what}"
+                );
                 let best = suspects[0].misfit;
                 suspects
                     .iter()

@@ -13,6 +13,8 @@
 //! - [`rates`]: part 5's sample-rate image (`NAME_rate.png`) read back
 //!   as the fraction of samples each pixel took, `r = (1 + R - B) / 2`;
 //! - [`verdict`]: what differs and where, and which mistakes fit;
+//! - [`patterns`]: single-pixel patterns of a failed image (holes, acne,
+//!   fireflies) against a correct render's own;
 //! - [`outcome`]: what a judged check gives: its verdict and the images
 //!   the report shows;
 //! - [`report`]: `report.html`, one self-contained page;
@@ -26,6 +28,7 @@
 
 pub mod battery;
 pub mod outcome;
+pub mod patterns;
 pub mod rates;
 pub mod report;
 pub mod scenes;

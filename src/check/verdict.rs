@@ -4,6 +4,7 @@
 //! student's rate image against the null renders' ([`super::rates`]).
 
 use super::battery::{Check, Render, Stage, SIZE};
+use super::patterns;
 use super::rates;
 use super::stats::{self, chi_square_quantile, NullModel, BLOCK};
 use super::student::{Capabilities, Student};
@@ -228,7 +229,10 @@ pub fn judge(
         .take(SHOWN_SUSPECTS)
         .map(|(s, image)| (s.mistake, image.clone()))
         .collect();
-    let what = describe_planes(&decided, &models, check.spp);
+    let mut what = describe_planes(&decided, &models, check.spp);
+    if let Some(patterns) = patterns::describe(&written.image, SIZE.0 as usize, &images_of) {
+        what = format!("{what}; {patterns}");
+    }
     CheckResult {
         images: Some(images),
         ..result(Outcome::Fail {
