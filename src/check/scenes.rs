@@ -364,4 +364,36 @@ mod tests {
             is(&loaded, s.material, false);
         }
     }
+
+    /// The rough-metal box and the mesh box, written in the course's
+    /// dialect and read back: the same balls of copper (roughness, eta
+    /// and k), the same triangles of the balls of triangles.
+    #[test]
+    fn the_microfacet_and_mesh_boxes_survive_the_course_format() {
+        let round_trip = |scene: &Scene| {
+            let mut text = Vec::new();
+            export_scene::write_scene_dae(scene, &mut text).unwrap();
+            let loaded =
+                scene::collada::load_str(std::str::from_utf8(&text).unwrap(), "box.dae").unwrap();
+            assert!(loaded.warnings.is_empty(), "{:?}", loaded.warnings);
+            loaded
+        };
+        let metal = |s: &Scene| -> Vec<(f32, Vec3, Vec3)> {
+            s.spheres
+                .iter()
+                .filter_map(|b| match s.materials[b.material as usize] {
+                    Material::Microfacet { alpha, eta, k } => Some((alpha, eta, k)),
+                    _ => None,
+                })
+                .collect()
+        };
+        let scene = microfacet_box();
+        let metals = metal(&scene);
+        assert_eq!(metals.len(), 2);
+        assert_eq!(metal(&round_trip(&scene)), metals);
+        let mesh = CheckScene::Mesh.own();
+        let loaded = round_trip(&mesh);
+        assert_eq!(loaded.mesh.triangles.len(), mesh.mesh.triangles.len());
+        assert!(mesh.mesh.triangles.len() > 448, "two balls of 224 and the box");
+    }
 }
