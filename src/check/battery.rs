@@ -281,18 +281,20 @@ impl Check {
         flags
     }
 
-    /// The mistakes that can show in this check. Of 3-1: those of its
-    /// part and of the parts before it, which every render goes through;
-    /// part 5's only where the check sets `-a` (they change nothing below
-    /// 32 samples otherwise). Of 3-2, whose parts 1 to 5 are the staff's:
-    /// part 6's where the scene has mirror and glass, part 8's where the
+    /// The mistakes that can show in this check. Of 3-1: those of parts 1
+    /// to 3 and of its own part, which every render goes through (part
+    /// 2's check lights its mesh by part 3's light sampling); part 5's
+    /// only where the check sets `-a` (they change nothing below 32
+    /// samples otherwise). Of 3-2, whose parts 1 to 5 are the staff's:
+    /// part 6's of mirror and glass where the scene has them, of the rough
+    /// metal where it has that, part 7's with a map, part 8's where the
     /// check has a lens (each changes nothing elsewhere).
     pub fn suspects(&self) -> Vec<Mistake> {
         Mistake::ALL
             .into_iter()
             .filter(|m| match (self.assignment, m.info().part) {
                 (Assignment::PathTracer1, part) => {
-                    part <= self.part && (part != 5 || self.adaptive.is_some())
+                    part <= self.part.max(3) && (part != 5 || self.adaptive.is_some())
                 }
                 (Assignment::PathTracer2, 6) => match self.scene {
                     CheckScene::Specular => MATERIAL_MISTAKES.contains(m),

@@ -19,11 +19,13 @@
 //!   the report shows;
 //! - [`report`]: `report.html`, one self-contained page;
 //! - [`scenes`]: the scenes the checks render: the course's
-//!   `CBspheres_lambertian.dae` where one is found (`--scenes DIR`, else
-//!   `CS184_SCENES`), else the project's own Cornell box; for part 6 a box
-//!   of mirror and glass of the project's, for part 7 balls on a floor
-//!   under a sky of the project's ([`sky`], an OpenEXR map the course's
-//!   loader reads); each written in the course's dialect
+//!   `CBspheres_lambertian.dae`, `CBbunny.dae` (part 2) and
+//!   `CBspheres_microfacet_al_ag.dae` (part 6's rough metal) where found
+//!   (`--scenes DIR`, else `CS184_SCENES`), else the project's own Cornell
+//!   box, with balls of triangles, with copper balls; for part 6's mirror
+//!   and glass a box of the project's, for part 7 balls on a floor under a
+//!   sky of the project's ([`sky`], an OpenEXR map the course's loader
+//!   reads); each written in the course's dialect
 //!   ([`crate::scene::export_scene`]) into the output folder.
 
 pub mod battery;

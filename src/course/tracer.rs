@@ -29,11 +29,13 @@
 //! each area light is its own quad emitting `L / A max(0, n . wo)` and the
 //! lamp mesh emits nothing.
 //!
-//! The catalogue's mistakes ([`crate::mistakes`]) of parts 3 and 4 live
-//! here, each a branch on [`StarterTracer::mistakes`] at the line a student
-//! would get wrong, and those of parts 6 and 7 in the mistakes' own
-//! versions of the starter's BSDFs and environment light, called from here
-//! when chosen; with none chosen, every branch takes the correct way.
+//! The catalogue's mistakes ([`crate::mistakes`]) of parts 3 and 4 and
+//! the rough metal's two of part 6 (a factor on `f`, one on the sample's
+//! pdf) live here, each a branch on [`StarterTracer::mistakes`] at the
+//! line a student would get wrong, and those of mirror, glass and part 7
+//! in the mistakes' own versions of the starter's BSDFs and environment
+//! light, called from here when chosen; with none chosen, every branch
+//! takes the correct way.
 
 use glam::Vec3;
 

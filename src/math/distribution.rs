@@ -87,8 +87,8 @@ fn tabulate(func: &[f32], cdf: &mut Vec<f32>, guide: &mut Vec<u32>) -> f32 {
     let row = &cdf[start..];
     guide.extend((0..n).map(|k| {
         let u = k as f32 / n as f32;
-        // `cdf[n] = 1 > u`, so the last cell with `cdf <= u` is below n.
-        row.partition_point(|&c| c <= u).saturating_sub(1) as u32
+        // Below n but where n > 2^24 rounds `(n - 1) / n` up to 1 = cdf[n].
+        (row.partition_point(|&c| c <= u).saturating_sub(1)).min(n - 1) as u32
     }));
     if uniform {
         0.0

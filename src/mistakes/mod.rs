@@ -7,7 +7,8 @@
 //! on), at the line a student would get wrong, as one branch on
 //! [`Mistakes::has`]: the camera's and the pixel loop's (parts 1, 5 and 8)
 //! in [`crate::course::pixel`] (the starter's `raytrace_pixel` and
-//! `generate_ray`), parts 3 and 4 in [`crate::course::tracer`], and where
+//! `generate_ray`), parts 3 and 4 and the rough metal's in
+//! [`crate::course::tracer`], and where
 //! a mistake needs more than a changed line, in this module's files
 //! ([`direct`], [`materials`], [`environment`]), called from there. Parts
 //! 1 and 2's intersection and BVH mistakes live in [`intersect`]'s
