@@ -94,8 +94,7 @@ fn judged_at_gain(bench: &Bench, check: &Check, gain: f32, seed: u64) -> f64 {
 /// check of 3-1 at the battery's rate but the noisy `-H` one, which a
 /// renderer 30 % off fails. Measured (`measure_the_power_of_each_check`,
 /// 5 seeds a factor; docs/15-check.md): every other check fails 0.93 and
-/// 1.07 at 5 of 5 seeds, `-H` fails 1.15 at 5 of 5, 0.8 at about its
-/// threshold and 0.7 at 1.5 times it.
+/// 1.07 at 5 of 5 seeds, `-H` fails 0.7 and 1.15 at 5 of 5 (0.8 at 4).
 #[test]
 fn a_tenth_too_bright_or_too_dark_fails_every_check() {
     let bench = Bench::new();
