@@ -19,7 +19,8 @@
 //! drops the shadows (every shadow ray starts inside the root's box), and
 //! permuted barycentrics reshade the smooth balls. A finished binary has
 //! no flag for the normal shading of part 1, so part 1's mistakes are
-//! suspects of this check and of every later one of 3-1.
+//! suspects of this check and of every later one of 3-1; so are part 3's,
+//! whose light sampling lights the mesh.
 //!
 //! The checks of assignment 3-2 ([`Check::assignment`]) render as its
 //! correct solution does: the staff's parts 1 to 5, the lamps as the
