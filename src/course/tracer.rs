@@ -30,19 +30,18 @@
 //! lamp mesh emits nothing.
 //!
 //! The catalogue's mistakes ([`crate::mistakes`]) of parts 3 and 4 and
-//! the rough metal's two of part 6 (a factor on `f`, one on the sample's
-//! pdf) live here, each a branch on [`StarterTracer::mistakes`] at the
-//! line a student would get wrong, and those of mirror, glass and part 7
-//! in the mistakes' own versions of the starter's BSDFs and environment
-//! light, called from here when chosen; with none chosen, every branch
-//! takes the correct way.
+//! the rough metal's factor on `f` live here, each a branch on
+//! [`StarterTracer::mistakes`] at the line a student would get wrong,
+//! and those of parts 6 and 7 in the mistakes' own versions of the
+//! starter's BSDFs, pdfs and environment light, called from here when
+//! chosen; with none chosen, every branch takes the correct way.
 
 use glam::Vec3;
 
 use crate::global::CONTINUE_PROBABILITY;
 use crate::intersect::{Hit, Intersector, Ray};
 use crate::lights::{EmitterRole, Light, LightPdf};
-use crate::materials::{Bsdf, BsdfSample, Density};
+use crate::materials::{Bsdf, BsdfSample};
 use crate::math::warp::{sample_uniform_hemisphere, uniform_hemisphere_pdf};
 use crate::math::Rgb;
 use crate::mistakes::{self, Mistake, Mistakes};
@@ -130,19 +129,10 @@ impl StarterTracer {
     }
 
     /// The factor a bounce from `wo` multiplies the light it brings by:
-    /// `f cos / pdf`. A microfacet sample's pdf without its Jacobian is
-    /// `p(h) = 4 (wo.h) p(wi)`.
+    /// `f cos / pdf`.
     fn bounce_weight(&self, bsdf: &Bsdf, wo: Vec3, sample: &BsdfSample) -> Rgb {
         let f = sample.f * self.f_factor(bsdf);
-        let density = match (bsdf, sample.density) {
-            (Bsdf::Conductor(_), Density::SolidAngle(p))
-                if self.mistakes.has(Mistake::MicrofacetPdfNoJacobian) =>
-            {
-                let h = (wo + sample.wi).normalize_or_zero();
-                Density::SolidAngle(p * 4.0 * wo.dot(h))
-            }
-            (_, density) => density,
-        };
+        let density = mistakes::materials::microfacet_density(bsdf, wo, sample, self.mistakes);
         if self.mistakes.has(Mistake::ThroughputWithoutCosPdf) {
             f
         } else {

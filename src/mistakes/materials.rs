@@ -2,7 +2,7 @@
 //! as a student writes them with the catalogue's mistakes of part 6:
 //! called by [`crate::course::StarterTracer`] only when one is chosen.
 //! The rough metal's two ([`MICROFACET_MISTAKES`]) are a factor each, on
-//! `f` and on the sample's pdf, in the tracer itself.
+//! `f` (in the tracer) and on the sample's pdf ([`microfacet_density`]).
 //!
 //! The right ones are [`crate::materials::Mirror`], [`Refraction`] and
 //! [`Glass`]; these follow them step by step, with the mistaken step where
@@ -28,6 +28,27 @@ pub const MATERIAL_MISTAKES: [Mistake; 5] = [
 /// makes where it evaluates and weights a BSDF.
 pub const MICROFACET_MISTAKES: [Mistake; 2] =
     [Mistake::MicrofacetNoFour, Mistake::MicrofacetPdfNoJacobian];
+
+/// The density a student's `MicrofacetBSDF::sample_f` gives `sample`,
+/// drawn from `wo`: with `microfacet-pdf-no-jacobian`, the half vector's,
+/// `p(h) = 4 (wo.h) p(wi)` (for a reflection `wo.h = wi.h`); else the
+/// sample's own.
+pub fn microfacet_density(
+    bsdf: &Bsdf,
+    wo: Vec3,
+    sample: &BsdfSample,
+    mistakes: Mistakes,
+) -> Density {
+    match (bsdf, sample.density) {
+        (Bsdf::Conductor(_), Density::SolidAngle(p))
+            if mistakes.has(Mistake::MicrofacetPdfNoJacobian) =>
+        {
+            let h = (wo + sample.wi).normalize_or_zero();
+            Density::SolidAngle(p * 4.0 * wo.dot(h))
+        }
+        (_, density) => density,
+    }
+}
 
 /// The sample a student's delta BSDF draws with `mistakes`, or `None` when
 /// no material mistake is chosen or `bsdf` is not a delta BSDF (the right
