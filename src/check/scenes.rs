@@ -272,14 +272,7 @@ pub fn specular_box() -> Scene {
 /// each reflecting the lit walls (what a wrong `sample_f` changes) and
 /// the lamp's highlight (what a wrong `f` changes).
 pub fn microfacet_box() -> Scene {
-    let (eta, k) = builtin::materials_box()
-        .materials
-        .into_iter()
-        .find_map(|m| match m {
-            Material::Microfacet { eta, k, .. } => Some((eta, k)),
-            _ => None,
-        })
-        .expect("the materials box has copper");
+    let (eta, k) = (builtin::COPPER_ETA, builtin::COPPER_K);
     let mut scene = builtin::cornell_box();
     let balls: Vec<MaterialId> = scene.spheres.iter().map(|s| s.material).collect();
     for (material, alpha) in balls.into_iter().zip([0.15, 0.4]) {

@@ -59,8 +59,8 @@ pub fn materials_box() -> Scene {
     });
     let copper = builder.material(Material::Microfacet {
         alpha: 0.15,
-        eta: Vec3::new(0.200, 0.924, 1.102),
-        k: Vec3::new(3.913, 2.453, 2.142),
+        eta: COPPER_ETA,
+        k: COPPER_K,
     });
     box_with_spheres(
         builder,
@@ -72,6 +72,13 @@ pub fn materials_box() -> Scene {
         ],
     )
 }
+
+/// Copper's index of refraction at 650, 550 and 450 nm, real part
+/// ([`materials_box`] gives the source).
+pub const COPPER_ETA: Vec3 = Vec3::new(0.200, 0.924, 1.102);
+
+/// Copper's extinction coefficient at 650, 550 and 450 nm.
+pub const COPPER_K: Vec3 = Vec3::new(3.913, 2.453, 2.142);
 
 /// The name under which [`environment_spheres`] appears in messages.
 pub const ENVIRONMENT_SPHERES: &str = "built-in: environment-spheres";
@@ -91,8 +98,8 @@ pub fn environment_spheres() -> Scene {
     });
     let copper = builder.material(Material::Microfacet {
         alpha: 0.2,
-        eta: Vec3::new(0.200, 0.924, 1.102),
-        k: Vec3::new(3.913, 2.453, 2.142),
+        eta: COPPER_ETA,
+        k: COPPER_K,
     });
     builder.quad(
         floor,
