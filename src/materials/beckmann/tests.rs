@@ -1,0 +1,117 @@
+//! The Beckmann distribution's unit tests.
+
+use super::*;
+
+/// Midpoint quadrature of `g(w)` over the upper hemisphere in
+/// `(theta, phi)` with `d omega = sin(theta) d theta d phi`, the `theta`
+/// points packed towards the pole when `alpha` is small.
+fn hemisphere_integral(theta_max: f64, n: usize, g: impl Fn(Vec3) -> f64) -> f64 {
+    let (dt, dp) = (theta_max / n as f64, 2.0 * PI / n as f64);
+    let mut sum = 0.0;
+    for i in 0..n {
+        let t = (i as f64 + 0.5) * dt;
+        for j in 0..n {
+            let p = (j as f64 + 0.5) * dp;
+            let w = Vec3::new(
+                (t.sin() * p.cos()) as f32,
+                (t.sin() * p.sin()) as f32,
+                t.cos() as f32,
+            );
+            sum += g(w) * t.sin();
+        }
+    }
+    sum * dt * dp
+}
+
+fn theta_max(alpha: f32) -> f64 {
+    (f64::from(alpha) * 12.0).atan().min(PI / 2.0)
+}
+
+#[test]
+fn lambda_skipped_past_six_is_below_f32_precision_of_one_plus_lambda() {
+    for alpha in [0.01f32, 0.025, 0.1, 0.25] {
+        for a in [6.0001f64, 6.5, 8.0, 20.0] {
+            // A direction with cot(theta) = a alpha.
+            let tan = 1.0 / (a * f64::from(alpha));
+            let w = Vec3::new(tan as f32, 0.0, 1.0).normalize();
+            let b = Beckmann::new(alpha);
+            let exact = 0.5 * ((-a * a).exp() / (a * SQRT_PI) - libm::erfc(a));
+            assert!(exact < 1e-18, "alpha {alpha}, a {a}: {exact}");
+            assert_eq!(1.0f32 + exact as f32, 1.0);
+            assert!(b.lambda(w) < 1e-18);
+        }
+    }
+}
+
+#[test]
+fn d_is_normalised_by_projected_area() {
+    for alpha in [0.01f32, 0.1, 0.5, 1.0] {
+        let b = Beckmann::new(alpha);
+        let total = hemisphere_integral(theta_max(alpha), 800, |h| {
+            f64::from(b.d(h)) * f64::from(h.z)
+        });
+        assert!((total - 1.0).abs() < 1e-3, "alpha {alpha}: {total}");
+    }
+}
+
+/// Heitz 2014, eq. 9 with eq. 17: the visible projected area of the
+/// microfacets is the macro surface's, `w.z`, times `G1(w)`, i.e.
+/// `integral max(0, w.h) D(h) dh = w.z (1 + Lambda(w))`. A wrong
+/// `Lambda` (or the handout's `G1` mistyped) fails this.
+#[test]
+fn lambda_matches_the_visible_projected_area() {
+    for alpha in [0.05f32, 0.3, 1.0] {
+        let b = Beckmann::new(alpha);
+        for cos in [1.0f32, 0.7, 0.3, 0.05] {
+            let w = Vec3::new((1.0 - cos * cos).sqrt(), 0.0, cos);
+            let visible = hemisphere_integral(theta_max(alpha), 1200, |h| {
+                f64::from(w.dot(h).max(0.0)) * f64::from(b.d(h))
+            });
+            let expected = f64::from(cos) * (1.0 + f64::from(b.lambda(w)));
+            assert!(
+                (visible - expected).abs() < 2e-3 * expected,
+                "alpha {alpha}, cos {cos}: {visible} vs {expected}"
+            );
+            let pdf_total =
+                hemisphere_integral(theta_max(alpha), 600, |h| f64::from(b.pdf_visible(w, h)));
+            assert!((pdf_total - 1.0).abs() < 3e-3, "{alpha} {cos}: {pdf_total}");
+        }
+    }
+}
+
+#[test]
+fn lambda_limits() {
+    let b = Beckmann::new(0.5);
+    assert_eq!(b.lambda(Vec3::Z), 0.0);
+    assert!(b.lambda(Vec3::new(1.0, 0.0, 1e-6)) > 1e4);
+    assert_eq!(b.lambda(Vec3::new(1.0, 0.0, 0.0)), f32::INFINITY);
+    assert_eq!(b.g1(Vec3::new(1.0, 0.0, 0.0)), 0.0);
+    // Monotone: more masking towards grazing.
+    let mut last = 0.0;
+    for i in (1..=100).rev() {
+        let c = i as f32 / 100.0;
+        let l = b.lambda(Vec3::new((1.0 - c * c).sqrt(), 0.0, c));
+        assert!(l >= last, "{c}");
+        last = l;
+    }
+}
+
+#[test]
+fn visible_slopes_follow_their_cdf() {
+    // The sampled x is the inverse of the normalised C at u.x.
+    for theta in [0.0f64, 0.5, 1.2, 1.5, std::f64::consts::FRAC_PI_2 - 1e-4] {
+        let (c, s) = (theta.cos(), theta.sin());
+        let cdf = |x: f64| c * (1.0 + libm::erf(x)) + s * (-x * x).exp() / SQRT_PI;
+        let top = if s > 0.0 { (c / s).min(6.0) } else { 6.0 };
+        for k in 1..100 {
+            let u = k as f32 / 100.0;
+            let (x, _) = sample_unit_slopes(c, s, Vec2::new(u, 0.5));
+            assert!(x <= top + 1e-12);
+            let got = cdf(x) / cdf(top);
+            assert!(
+                (got - f64::from(u)).abs() <= SLOPE_TOLERANCE * f64::from(u),
+                "theta {theta}, u {u}: {got}"
+            );
+        }
+    }
+}
