@@ -19,6 +19,7 @@ use bench::{all_pass, report_is_whole, script, stand_in_of, Bench};
 use pathtracer::check::battery::battery_of;
 use pathtracer::check::{battery, judge, CheckScene, Outcome};
 use pathtracer::course::Assignment;
+use pathtracer::mistakes::materials::MICROFACET_MISTAKES;
 use pathtracer::mistakes::Mistake;
 
 const THREE_TWO: Assignment = Assignment::PathTracer2;
@@ -93,15 +94,13 @@ fn part_6_mistakes_fail_and_are_named_first() {
     );
 }
 
-/// Part 6's rough metal: `microfacet-no-4` (4 times too bright) and
-/// `microfacet-pdf-no-jacobian` (what the balls reflect darker, their
-/// highlights unchanged) on the box of copper balls at `-m 2`.
+/// Part 6's rough metal: `microfacet-no-4` (4 times too bright),
+/// `microfacet-d-no-cos4` (the rough ball a fifth darker, most at its
+/// rim) and `microfacet-pdf-no-jacobian` (what the balls reflect darker,
+/// their highlights unchanged) on the box of copper balls at `-m 2`.
 #[test]
 fn microfacet_mistakes_fail_and_are_named_first() {
-    each_fails_and_is_named_first(
-        6,
-        &[Mistake::MicrofacetNoFour, Mistake::MicrofacetPdfNoJacobian],
-    );
+    each_fails_and_is_named_first(6, &MICROFACET_MISTAKES);
 }
 
 /// Part 7's four mistakes under the project's sky.

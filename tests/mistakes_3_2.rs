@@ -6,6 +6,8 @@
 //! Every test's comparisons share [`ALPHA`] = 1e-4.
 
 mod common;
+#[path = "mistakes_3_2/microfacet.rs"]
+mod microfacet;
 
 use common::*;
 use glam::Vec3;
@@ -255,48 +257,6 @@ fn schlick_r0_not_squared_reflects_five_times_as_much() {
         "{right:?}"
     );
     assert_ratio("schlick-r0-not-squared", wrong, right, factor, ALPHA);
-}
-
-const COPPER_BALL: Vec3 = Vec3::new(0.15, 0.22, -0.55);
-
-/// Part 6's microfacet mistakes on the materials box's copper ball:
-/// `microfacet-no-4` makes its direct light (`-m 1`, light sampled, `f`
-/// alone) exactly 4 times as bright; `microfacet-pdf-no-jacobian` leaves
-/// that unchanged and darkens what the ball reflects (its second bounce
-/// alone, `-m 2 -o 0`, sampled by `sample_f`) by `4 wo.h`: measured 0.35
-/// here (`wo.h`, the cosine between the view and the half vector, is 0.6
-/// or more on most of the ball).
-#[test]
-fn microfacet_mistakes_change_the_copper_ball() {
-    let view = CourseView::of(builtin::materials_box());
-    let copper = view.pixels_seeing(|p| (p - COPPER_BALL).length() < 0.23);
-    assert!(copper.len() > 20, "{}", copper.len());
-    let alpha = ALPHA / 3.0;
-    let direct =
-        |m: &[Mistake], seed| view.mean_over(&starter_tracer(m, L, 1, 1, true), 256, &copper, seed);
-    let right = direct(&[], 560);
-    let four = direct(&[Mistake::MicrofacetNoFour], 561);
-    assert_ratio("microfacet-no-4", four, right, 4.0, alpha);
-    let jacobian = direct(&[Mistake::MicrofacetPdfNoJacobian], 562);
-    assert_ratio(
-        "microfacet-pdf-no-jacobian, -m 1",
-        jacobian,
-        right,
-        1.0,
-        alpha,
-    );
-    let second = |m: &[Mistake], seed| {
-        view.mean_over(&starter_tracer(m, L, 1, 2, false), 256, &copper, seed)
-    };
-    let right = second(&[], 563);
-    let wrong = second(&[Mistake::MicrofacetPdfNoJacobian], 564);
-    assert_ratio_in(
-        "microfacet-pdf-no-jacobian, -m 2 -o 0",
-        wrong,
-        right,
-        0.25..0.6,
-        alpha,
-    );
 }
 
 /// The environment scene under the built-in sky.

@@ -7,8 +7,8 @@
 //! cargo run --release --example symptoms [-- -t THREADS] [--only NAME]...
 //! ```
 //!
-//! `--only NAME` renders the pictures of the mistakes named and leaves
-//! docs/13-symptoms.md as it is.
+//! `--only NAME` renders the pictures of the mistakes named, prints their
+//! sections of docs/13-symptoms.md and leaves the file as it is.
 //!
 //! Writes `docs/images/symptom-NAME.png` (three 320 x 240 pictures,
 //! labelled) and `docs/13-symptoms.md`. Scenes are framed as the course
@@ -180,6 +180,8 @@ fn run() -> Result<()> {
         )?;
     }
     if !only.is_empty() {
+        // The sections alone, to paste: docs/13 is written whole or not.
+        print!("{}", &doc[HEADER.len()..]);
         return Ok(());
     }
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/13-symptoms.md");

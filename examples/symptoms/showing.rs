@@ -31,6 +31,9 @@ pub enum Stage {
     TurnedCamera,
     /// The Cornell box with balls of triangles, smooth normals (made in code).
     MeshBalls,
+    /// The Cornell box with balls of rough copper, Beckmann alpha 0.15
+    /// and 0.4 (part 6's check, [`pathtracer::check::scenes::microfacet_box`]).
+    CopperBalls,
 }
 
 /// How a mistake is shown: where, and with which of the course's flags.
@@ -119,11 +122,13 @@ pub fn showing(m: Mistake) -> Showing {
         | RefractionRatioInverted
         | NoEtaSquared
         | NoTotalInternalReflection
-        | SchlickR0NotSquared
-        | MicrofacetNoFour
-        | MicrofacetPdfNoJacobian => Showing {
+        | SchlickR0NotSquared => Showing {
             spp: 128,
             ..paths(Stage::MaterialsBox, 5)
+        },
+        MicrofacetNoFour | MicrofacetDNoCos4 | MicrofacetPdfNoJacobian => Showing {
+            spp: 128,
+            ..paths(Stage::CopperBalls, 5)
         },
         EnvPdfNoSin | EnvPdfNoJacobian | EnvMapUFlipped | EnvMapVFlipped => paths(Stage::Sky, 5),
     }
@@ -161,6 +166,7 @@ impl Showing {
             Stage::LoweredLamp => " (the figure lowers the lamp by 0.3, in code)",
             Stage::TurnedCamera => " (the figure turns the camera, in code)",
             Stage::MeshBalls => " (the figure's balls are meshes, in code)",
+            Stage::CopperBalls => " (the figure's balls are rough copper, in code)",
             _ => "",
         };
         format!(
@@ -183,6 +189,7 @@ pub fn stage(how: &Showing) -> Result<Staged> {
     let mut scene = match stage {
         Stage::CornellBox | Stage::LoweredLamp | Stage::TurnedCamera => builtin::cornell_box(),
         Stage::MeshBalls => builtin::mesh_balls_box(),
+        Stage::CopperBalls => pathtracer::check::scenes::microfacet_box(),
         Stage::MaterialsBox => builtin::materials_box(),
         Stage::Sky => builtin::environment_spheres(),
     };

@@ -115,15 +115,16 @@ impl StarterTracer {
 
     /// `bsdf->f(wo, wi)`.
     fn f(&self, bsdf: &Bsdf, wo: Vec3, wi: Vec3) -> Rgb {
-        bsdf.f(wo, wi) * self.f_factor(bsdf)
+        bsdf.f(wo, wi) * self.f_factor(bsdf, wo, wi)
     }
 
-    /// What a student's `f` is times the right one: `pi` for a diffuse
-    /// BRDF taken as its albedo, 4 for a microfacet one without its 4.
-    fn f_factor(&self, bsdf: &Bsdf) -> f32 {
+    /// What a student's `f(wo, wi)` is times the right one: `pi` for a
+    /// diffuse BRDF taken as its albedo; the rough metal's mistakes'
+    /// factor (`mistakes::materials::microfacet_f_factor`).
+    fn f_factor(&self, bsdf: &Bsdf, wo: Vec3, wi: Vec3) -> f32 {
         match bsdf {
             Bsdf::Diffuse(_) if self.mistakes.has(Mistake::BrdfIsAlbedo) => std::f32::consts::PI,
-            Bsdf::Conductor(_) if self.mistakes.has(Mistake::MicrofacetNoFour) => 4.0,
+            Bsdf::Conductor(_) => mistakes::materials::microfacet_f_factor(wo, wi, self.mistakes),
             _ => 1.0,
         }
     }
@@ -131,7 +132,7 @@ impl StarterTracer {
     /// The factor a bounce from `wo` multiplies the light it brings by:
     /// `f cos / pdf`.
     fn bounce_weight(&self, bsdf: &Bsdf, wo: Vec3, sample: &BsdfSample) -> Rgb {
-        let f = sample.f * self.f_factor(bsdf);
+        let f = sample.f * self.f_factor(bsdf, wo, sample.wi);
         let density = mistakes::materials::microfacet_density(bsdf, wo, sample, self.mistakes);
         if self.mistakes.has(Mistake::ThroughputWithoutCosPdf) {
             f

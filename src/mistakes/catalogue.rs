@@ -224,6 +224,13 @@ impl Mistake {
                 "the BRDF's denominator without its 4: F G D / (cos_o cos_i) for F G D / (4 cos_o cos_i)",
                 "the metal 4 times too bright, in its highlights and in what it reflects (much of it clips to white)",
             ),
+            Mistake::MicrofacetDNoCos4 => (
+                "microfacet-d-no-cos4",
+                6,
+                "MicrofacetBSDF::D",
+                "Beckmann's D(h) = exp(-tan^2(theta_h) / alpha^2) / (pi alpha^2 cos^4(theta_h)) without the cos^4 of its denominator",
+                "the metal darker by cos^4(theta_h), the rougher the darker: its highlights narrower and dimmer at their edges, what it reflects dimmer at grazing angles",
+            ),
             Mistake::MicrofacetPdfNoJacobian => (
                 "microfacet-pdf-no-jacobian",
                 6,

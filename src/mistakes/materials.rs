@@ -1,8 +1,9 @@
 //! The starter's `MirrorBSDF`, `RefractionBSDF` and `GlassBSDF::sample_f`
 //! as a student writes them with the catalogue's mistakes of part 6:
 //! called by [`crate::course::StarterTracer`] only when one is chosen.
-//! The rough metal's two ([`MICROFACET_MISTAKES`]) are a factor each, on
-//! `f` (in the tracer) and on the sample's pdf ([`microfacet_density`]).
+//! The rough metal's three ([`MICROFACET_MISTAKES`]) are a factor each, on
+//! `f` ([`microfacet_f_factor`]) or on the sample's pdf
+//! ([`microfacet_density`]).
 //!
 //! The right ones are [`crate::materials::Mirror`], [`Refraction`] and
 //! [`Glass`]; these follow them step by step, with the mistaken step where
@@ -26,8 +27,27 @@ pub const MATERIAL_MISTAKES: [Mistake; 5] = [
 
 /// Part 6's mistakes of the rough metal, which [`crate::course::StarterTracer`]
 /// makes where it evaluates and weights a BSDF.
-pub const MICROFACET_MISTAKES: [Mistake; 2] =
-    [Mistake::MicrofacetNoFour, Mistake::MicrofacetPdfNoJacobian];
+pub const MICROFACET_MISTAKES: [Mistake; 3] = [
+    Mistake::MicrofacetNoFour,
+    Mistake::MicrofacetDNoCos4,
+    Mistake::MicrofacetPdfNoJacobian,
+];
+
+/// What a student's `MicrofacetBSDF::f(wo, wi)` is times the right one:
+/// 4 without the 4 of `F G D / (4 cos_o cos_i)`; `cos^4(theta_h)`, with
+/// `h = normalize(wo + wi)`, with `D` written without the `cos^4(theta_h)`
+/// of its denominator (the student's `sample_f` draws `theta_h` from its
+/// own inverted cdf and keeps its pdf, so only `f` changes).
+pub fn microfacet_f_factor(wo: Vec3, wi: Vec3, mistakes: Mistakes) -> f32 {
+    let mut factor = 1.0;
+    if mistakes.has(Mistake::MicrofacetNoFour) {
+        factor *= 4.0;
+    }
+    if mistakes.has(Mistake::MicrofacetDNoCos4) {
+        factor *= (wo + wi).normalize_or_zero().z.powi(4);
+    }
+    factor
+}
 
 /// The density a student's `MicrofacetBSDF::sample_f` gives `sample`,
 /// drawn from `wo`: with `microfacet-pdf-no-jacobian`, the half vector's,

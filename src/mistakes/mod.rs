@@ -77,6 +77,7 @@ pub enum Mistake {
     NoTotalInternalReflection,
     SchlickR0NotSquared,
     MicrofacetNoFour,
+    MicrofacetDNoCos4,
     MicrofacetPdfNoJacobian,
     // Part 7: environment light.
     EnvPdfNoSin,
@@ -105,7 +106,7 @@ pub struct MistakeInfo {
 
 impl Mistake {
     /// Every mistake, in the catalogue's order (by part).
-    pub const ALL: [Mistake; 38] = [
+    pub const ALL: [Mistake; 39] = [
         Mistake::FovFullAngle,
         Mistake::FovInDegrees,
         Mistake::RayInCameraSpace,
@@ -137,6 +138,7 @@ impl Mistake {
         Mistake::NoTotalInternalReflection,
         Mistake::SchlickR0NotSquared,
         Mistake::MicrofacetNoFour,
+        Mistake::MicrofacetDNoCos4,
         Mistake::MicrofacetPdfNoJacobian,
         Mistake::EnvPdfNoSin,
         Mistake::EnvPdfNoJacobian,

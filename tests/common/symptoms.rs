@@ -174,6 +174,50 @@ impl CourseView {
         self
     }
 
+    /// The ratio of `wrong`'s mean over `pixels` to `right`'s, each pair
+    /// rendered at `spp` with one seed (`seed`, then `seed + 1`): the same
+    /// samples, where a mistake only scales their weights, so that the
+    /// noise they share cancels. Its standard error: with `d = w - R r` a
+    /// pixel's residual in one pair, the two pairs' `d` differ by noise
+    /// alone, and `sum (d1 - d2)^2` estimates the variance of
+    /// `sum (d1 + d2)` (pixel by pixel, each pixel's samples its own);
+    /// `se = sqrt(that) / sum (r1 + r2)`, the delta method.
+    pub fn paired_ratio(
+        &self,
+        right: &StarterTracer,
+        wrong: &StarterTracer,
+        spp: u32,
+        pixels: &[usize],
+        seed: u64,
+    ) -> Mean {
+        let values = |tracer, seed| {
+            let rendered = self.render(tracer, spp, None, seed);
+            assert_eq!(rendered.rejected(), 0);
+            let values: Vec<f64> = pixels
+                .iter()
+                .map(|&i| luminance(rendered.estimates[i].radiance) as f64)
+                .collect();
+            values
+        };
+        let pairs = [seed, seed + 1].map(|s| (values(right, s), values(wrong, s)));
+        let sum = |v: &Vec<f64>| v.iter().sum::<f64>();
+        let total_right: f64 = pairs.iter().map(|(r, _)| sum(r)).sum();
+        let value = pairs.iter().map(|(_, w)| sum(w)).sum::<f64>() / total_right;
+        let residuals = pairs.map(|(r, w)| {
+            let d: Vec<f64> = r.iter().zip(&w).map(|(r, w)| w - value * r).collect();
+            d
+        });
+        let variance: f64 = residuals[0]
+            .iter()
+            .zip(&residuals[1])
+            .map(|(a, b)| (a - b).powi(2))
+            .sum();
+        Mean {
+            value,
+            se: variance.sqrt() / total_right,
+        }
+    }
+
     /// The mean luminance of `pixels` rendered by `tracer` at `spp`.
     pub fn mean_over(&self, tracer: &StarterTracer, spp: u32, pixels: &[usize], seed: u64) -> Mean {
         let rendered = self.render(tracer, spp, None, seed);
@@ -245,7 +289,14 @@ pub fn assert_ratio_in(
     range: std::ops::Range<f64>,
     alpha: f64,
 ) {
-    let (r, se) = ratio(wrong, right);
+    let (value, se) = ratio(wrong, right);
+    assert_ratio_safely_in(label, Mean { value, se }, range, alpha);
+}
+
+/// Asserts that `ratio` lies in `range`, its nearest end more than `z`
+/// standard errors away.
+pub fn assert_ratio_safely_in(label: &str, ratio: Mean, range: std::ops::Range<f64>, alpha: f64) {
+    let (r, se) = (ratio.value, ratio.se);
     let z = z_two_sided(alpha);
     eprintln!("{label}: ratio {r:.4} (se {se:.4}) in {range:?}");
     let margin = (r - range.start).min(range.end - r);
