@@ -98,7 +98,7 @@ impl EnvironmentLight {
     /// The light of `map`, sampled by `sampling`, its cells weighted by
     /// `weights` (times `sin(theta)`).
     pub fn with_weights(
-        map: EnvironmentMap,
+        mut map: EnvironmentMap,
         sampling: EnvironmentSampling,
         weights_by: EnvironmentWeights,
     ) -> Self {
@@ -118,9 +118,11 @@ impl EnvironmentLight {
         }
         // Each cell spans (2 pi / w) (pi / h) in (phi, theta).
         radiant_integral *= 2.0 * PI * PI / (w * h) as f32;
+        let distribution = Distribution2D::new(&weights, w, h);
+        map.set_cell_densities((0..w * h).map(|k| distribution.cell_pdf(k % w, k / w)));
         EnvironmentLight {
             tables: Arc::new(Tables {
-                distribution: Distribution2D::new(&weights, w, h),
+                distribution,
                 weights: weights_by,
                 map,
                 radiant_integral,
@@ -170,7 +172,7 @@ impl EnvironmentLight {
                 let s = (self.tables.distribution)
                     .sample_hinted(u, |row, column| map.prefetch_around(column, row));
                 let wi = uv_to_direction(s.x);
-                let pdf = s.pdf / (2.0 * PI * PI * sin_theta(wi));
+                let pdf = per_steradian(s.pdf, wi);
                 (wi, pdf, map.lookup(s.x))
             }
         };
@@ -189,32 +191,23 @@ impl EnvironmentLight {
             EnvironmentSampling::Uniform => uniform_sphere_pdf(),
             EnvironmentSampling::Importance => {
                 let w = wi.normalize_or_zero();
-                self.importance_pdf(w, direction_to_uv(w))
+                let (_, density) = self.tables.map.lookup_with_density(direction_to_uv(w));
+                per_steradian(density, w)
             }
         }
     }
 
-    /// The importance sampler's density per steradian at the unit
-    /// direction `w`, whose map coordinates are `uv`; 0 at the poles.
-    fn importance_pdf(&self, w: Vec3, uv: Vec2) -> f32 {
-        let sin_theta = sin_theta(w);
-        if sin_theta <= 0.0 {
-            return 0.0;
-        }
-        self.tables.distribution.pdf(uv) / (2.0 * PI * PI * sin_theta)
-    }
-
     /// What a ray escaping in the unit direction `w` sees, and, if
     /// `with_pdf`, the density [`Self::pdf_li`] of `w` (else 0): one
-    /// mapping to the map's `(u, v)` for both, and no density where the
-    /// radiance is black (it weighs nothing there).
+    /// mapping to the map's `(u, v)` and one lookup for both (the map
+    /// keeps each cell's density beside its texel), and no density where
+    /// the radiance is black (it weighs nothing there).
     pub fn escaped(&self, w: Vec3, with_pdf: bool) -> (Rgb, f32) {
-        let uv = direction_to_uv(w);
-        let radiance = self.tables.map.lookup(uv);
+        let (radiance, density) = self.tables.map.lookup_with_density(direction_to_uv(w));
         let pdf = match self.sampling {
             _ if !with_pdf || radiance == Rgb::ZERO => 0.0,
             EnvironmentSampling::Uniform => uniform_sphere_pdf(),
-            EnvironmentSampling::Importance => self.importance_pdf(w, uv),
+            EnvironmentSampling::Importance => per_steradian(density, w),
         };
         (radiance, pdf)
     }
@@ -236,6 +229,17 @@ fn sin_theta(w: Vec3) -> f32 {
     (w.x * w.x + w.z * w.z).sqrt()
 }
 
+/// The density per steradian at the unit direction `w` of a density
+/// `p(u, v)` per unit area of the map: `p(u, v) / (2 pi^2 sin(theta))`,
+/// 0 at the poles.
+fn per_steradian(density: f32, w: Vec3) -> f32 {
+    let sin_theta = sin_theta(w);
+    if sin_theta <= 0.0 {
+        return 0.0;
+    }
+    density / (2.0 * PI * PI * sin_theta)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -245,6 +249,51 @@ mod tests {
         let mut texels = vec![Rgb::ZERO; 16 * 8];
         texels[3 * 16 + 5] = Rgb::splat(10.0);
         EnvironmentMap::new("one texel", 16, 8, texels).unwrap()
+    }
+
+    /// The density kept beside each texel is the distribution's own, bit
+    /// for bit, wherever a direction falls (cell edges, the seam at
+    /// `u = 0`, near the poles): `escaped` and `pdf_li` read it, and
+    /// `sample_li` gives the directions it draws the same (to rounding).
+    /// Fails if the map's cell is found otherwise than the
+    /// distribution's (a `floor` of `u w - 1/2`, the lookup's own).
+    #[test]
+    fn the_density_beside_each_texel_is_the_distributions() {
+        let map = EnvironmentMap::from_fn("bands", 16, 8, |d| {
+            Rgb::new(1.0 + d.x.max(0.0) * 7.0, 0.5, 2.0 + d.y)
+        })
+        .unwrap();
+        let light = EnvironmentLight::new(map, EnvironmentSampling::Importance);
+        let tables = &light.tables;
+        let expected = |w: Vec3| {
+            let uv = direction_to_uv(w);
+            tables.distribution.pdf(uv) / (2.0 * PI * PI * sin_theta(w))
+        };
+        let mut uvs = vec![Vec2::new(0.0, 0.5), Vec2::new(0.999_999, 0.01)];
+        for k in 0..=32 {
+            for m in 1..16 {
+                // Every cell edge and the points between them.
+                uvs.push(Vec2::new(k as f32 / 32.0, m as f32 / 16.0));
+            }
+        }
+        for uv in uvs {
+            let w = uv_to_direction(uv);
+            assert!(expected(w) > 0.0, "{uv}");
+            assert_eq!(light.escaped(w, true).1, expected(w), "{uv}");
+            // pdf_li normalises its direction first.
+            assert_eq!(light.pdf_li(w), expected(w.normalize()), "{uv}");
+        }
+        for k in 0..200 {
+            let u = Vec2::new((k as f32 * 0.618_034).fract(), (k as f32 + 0.5) / 200.0);
+            let s = light.sample_li(u).unwrap();
+            let LightPdf::SolidAngle(p) = s.pdf else {
+                panic!("{:?}", s.pdf)
+            };
+            // The same cell's density; sin(theta) of `wi` and of `wi`
+            // normalised differ in the last bits.
+            let back = light.pdf_li(s.wi);
+            assert!((p - back).abs() <= 1e-5 * back, "{u}: {p} against {back}");
+        }
     }
 
     /// The handout's weights: the texel's luminance times `sin(theta)`, so

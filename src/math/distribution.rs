@@ -311,6 +311,16 @@ impl Distribution2D {
         self.marginal.pdf(p.y) * pdf_tables(self.row_cdf(row), p.x)
     }
 
+    /// The density per unit area in cell `(column, row)`: what
+    /// [`Self::pdf`] gives at every point of it, bit for bit.
+    pub fn cell_pdf(&self, column: usize, row: usize) -> f32 {
+        let in_row = self.row_cdf(row);
+        let n = self.width as f32;
+        self.marginal.cell_probability(row)
+            * self.height() as f32
+            * ((in_row[column + 1] - in_row[column]) * n)
+    }
+
     /// The `u` that [`Self::sample`] maps to `p`.
     pub fn invert(&self, p: Vec2) -> Vec2 {
         let row = self.marginal.cell_of(p.y.clamp(0.0, 1.0));
