@@ -72,6 +72,19 @@ fn environment(c: &mut Criterion) {
         group.bench_function("pdf_li", |b| {
             b.iter(|| directions.iter().map(|&w| light.pdf_li(w)).sum::<f32>())
         });
+        // What a ray escaping to the map pays under MIS: the radiance and
+        // the density, from one look-up.
+        group.bench_function("escaped", |b| {
+            b.iter(|| {
+                directions
+                    .iter()
+                    .map(|&w| {
+                        let (radiance, pdf) = light.escaped(w, true);
+                        radiance.x + pdf
+                    })
+                    .sum::<f32>()
+            })
+        });
         group.bench_function("escaped_radiance", |b| {
             b.iter(|| {
                 directions

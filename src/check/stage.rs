@@ -83,13 +83,13 @@ impl Stage {
     /// image's fractions. Neither depends on `threads`.
     pub fn render(&self, check: &Check, mistakes: Mistakes, seed: u64, threads: usize) -> Render {
         let Some(kept) = &self.kept else {
-            return self.render_anew(check, mistakes, seed, threads, 1.0);
+            return self.render_anew(check, mistakes, seed, threads, &|_, _| 1.0);
         };
         let key = format!("{check:?} {mistakes:?} {seed}");
         if let Some(render) = kept.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
             return render.clone();
         }
-        let render = self.render_anew(check, mistakes, seed, threads, 1.0);
+        let render = self.render_anew(check, mistakes, seed, threads, &|_, _| 1.0);
         kept.lock()
             .unwrap_or_else(|e| e.into_inner())
             .insert(key, render.clone());
@@ -97,10 +97,17 @@ impl Stage {
     }
 
     /// What a correct solution writes for `check` with `seed` were its
-    /// radiance `gain` times the right one (before the tone map): a
-    /// renderer off by a constant factor, to measure the smallest factor
-    /// a check detects (its power, docs/15-check.md). Never kept.
-    pub fn render_with_gain(&self, check: &Check, seed: u64, threads: usize, gain: f32) -> Render {
+    /// radiance at pixel `(x, y)` `gain(x, y)` times the right one (before
+    /// the tone map): a renderer off by a factor everywhere or in a
+    /// region, to measure the smallest error a check detects (its power,
+    /// docs/15-check.md). Never kept.
+    pub fn render_with_gain(
+        &self,
+        check: &Check,
+        seed: u64,
+        threads: usize,
+        gain: &dyn Fn(usize, usize) -> f32,
+    ) -> Render {
         self.render_anew(check, Mistakes::NONE, seed, threads, gain)
     }
 
@@ -110,7 +117,7 @@ impl Stage {
         mistakes: Mistakes,
         seed: u64,
         threads: usize,
-        gain: f32,
+        gain: &dyn Fn(usize, usize) -> f32,
     ) -> Render {
         let exact = CourseExact {
             assignment: check.assignment,
@@ -147,7 +154,11 @@ impl Stage {
             .film
             .pixels
             .iter()
-            .map(|&p| tone_map(p * gain))
+            .enumerate()
+            .map(|(k, &p)| {
+                let width = SIZE.0 as usize;
+                tone_map(p * gain(k % width, k / width))
+            })
             .collect();
         let rates = check.adaptive.map(|_| {
             let taken: Vec<f64> = rendered
