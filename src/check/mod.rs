@@ -9,7 +9,8 @@
 //! - [`stage`]: the scene loaded once, and the course's renders of the
 //!   checks;
 //! - [`stats`]: the decision, against the distribution of a correct
-//!   solution's images (false alarms at most [`ALPHA`] per battery);
+//!   solution's images (false alarms at most [`ALPHA`] per battery), and
+//!   [`scan`], its test of one region;
 //! - [`rates`]: part 5's sample-rate image (`NAME_rate.png`) read back
 //!   as the fraction of samples each pixel took, `r = (1 + R - B) / 2`;
 //! - [`verdict`]: what differs and where, and which mistakes fit;
@@ -33,6 +34,7 @@ pub mod outcome;
 pub mod patterns;
 pub mod rates;
 pub mod report;
+pub mod scan;
 pub mod scenes;
 pub mod sky;
 pub mod stage;

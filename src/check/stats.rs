@@ -21,7 +21,10 @@
 //! `sum min(z^2, 25)` over the `C` cells ([`statistic`]) stays below the chi-square quantile of `C`
 //! degrees of freedom at `1 - alpha` (Wilson and Hilferty's approximation,
 //! 1931): under a correct renderer each `z^2` is at most a chi-square of
-//! one degree, so it fails with probability at most `alpha`.
+//! one degree, so it fails with probability at most `alpha`. A check
+//! holds this test and [`super::scan`]'s, of one region, each at half its
+//! rate ([`super::verdict`]): the cap leaves the sum blind to a small
+//! region.
 
 use libm::erfc;
 

@@ -6,6 +6,7 @@
 use super::battery::{Check, Render, Stage, SIZE};
 use super::patterns;
 use super::rates;
+use super::scan::{scan, Scan, WINDOW};
 use super::stats::{self, chi_square_quantile, NullModel, BLOCK};
 use super::student::{Capabilities, Student};
 use crate::math::{luminance, Rgb};
@@ -61,12 +62,15 @@ impl Plane {
     }
 }
 
-/// One plane decided: the cells, their z against the model, the statistic.
+/// One plane decided: the cells, their z against the model, the
+/// statistic over every cell and the scan over its windows, each tested
+/// at half the plane's `alpha` (Bonferroni).
 struct Decided {
     x: Vec<f64>,
     z: Vec<f64>,
     statistic: f64,
     threshold: f64,
+    scan: Scan,
 }
 
 impl Decided {
@@ -74,15 +78,29 @@ impl Decided {
         let z = model.z_scores(&x);
         Decided {
             statistic: stats::statistic(&z),
-            threshold: chi_square_quantile(x.len() as f64, alpha),
+            threshold: chi_square_quantile(x.len() as f64, alpha / 2.0),
+            scan: scan(model, &x, &z, alpha / 2.0),
             x,
             z,
         }
     }
 
     fn passes(&self) -> bool {
-        self.statistic <= self.threshold
+        self.statistic <= self.threshold && self.scan.passes()
     }
+
+    /// The larger of each test's value over its threshold: above 1, the
+    /// plane fails.
+    fn severity(&self) -> f64 {
+        (self.statistic / self.threshold).max(self.scan.value / self.scan.threshold)
+    }
+}
+
+/// How far the cells `x` of an image are from `model` at false-alarm rate
+/// `alpha`, as a check decides its image: the larger of the statistic over
+/// its threshold and the scan over its own; above 1, the image fails.
+pub fn severity(model: &NullModel, x: Vec<f64>, alpha: f64) -> f64 {
+    Decided::new(x, model, alpha).severity()
 }
 
 /// Runs `check` with `student` on the scene file `scene_file` (which
@@ -261,7 +279,16 @@ fn describe_planes(decided: &[Decided], models: &[NullModel], spp: u32) -> Strin
             continue;
         }
         parts.push(if i == 0 {
-            describe(&d.x, &m.mean, &d.z)
+            let mut what = describe(&d.x, &m.mean, &d.z);
+            if !d.scan.passes() {
+                let (x, y) = d.scan.at;
+                let side = WINDOW * BLOCK;
+                let how = if d.scan.brighter { "brighter" } else { "darker" };
+                what += &format!(
+                    "; a region {how} than the course's: the {side} x {side} pixels from ({x}, {y})"
+                );
+            }
+            what
         } else {
             let (share, place) = differing_blocks(&d.z, 1);
             format!(
