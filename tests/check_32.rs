@@ -46,7 +46,7 @@ fn a_correct_3_2_renderer_passes_parts_6_to_8() {
 
 /// Each of `mistakes`, injected into a 3-2 stand-in, fails the check of
 /// `part` and is named first, fitting (measured: every one first, its
-/// misfit 0.4 a cell or less, the next one's 2.4 or more).
+/// misfit 0.4 a cell or less, the next one's 2.1 or more).
 fn each_fails_and_is_named_first(part: u8, mistakes: &[Mistake]) {
     let bench = Bench::new();
     let check = battery(&[part])
@@ -179,8 +179,8 @@ fn false_alarms_and_power_measured() {
             let s = statistic(&model.z_scores(&x));
             (
                 s,
-                severity(&model, x.clone(), 0.05),
-                severity(&model, x, battery_alpha),
+                severity(&model, &x, 3, 0.05),
+                severity(&model, &x, 3, battery_alpha),
             )
         };
         let correct: Vec<(f64, f64, f64)> = (0..30)

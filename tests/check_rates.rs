@@ -33,7 +33,7 @@ fn part5() -> Check {
 /// `alpha`, as the checker decides them (its sum of `z^2` and its scan
 /// over regions): above 1, they fail.
 fn rate_severity(model: &NullModel, rates: &[f64], alpha: f64) -> f64 {
-    severity(model, block_means(SIZE.0, SIZE.1, 1, rates), alpha)
+    severity(model, &block_means(SIZE.0, SIZE.1, 1, rates), 1, alpha)
 }
 
 /// The rate image's null model of `check` (8 renders, as the checker's).

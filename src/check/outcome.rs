@@ -19,8 +19,11 @@ pub struct Suspect {
 /// What a check found.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Outcome {
-    /// `statistic <= threshold` ([`super::stats::statistic`] and its chi-square bound).
+    /// Both tests passed: `statistic <= threshold` ([`super::stats::statistic`]
+    /// and its chi-square quantile) and the region test ([`super::scan`]).
     Pass { statistic: f64, threshold: f64 },
+    /// One test failed or both; `statistic` and `threshold` are the sum's
+    /// (a failure of the region test says so in `what`).
     Fail {
         statistic: f64,
         threshold: f64,

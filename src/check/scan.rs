@@ -15,17 +15,19 @@
 //! S_w = sum_{b in w} t_b / sqrt(m)
 //! ```
 //!
-//! Under a correct renderer the terms are symmetric about 0 with variance
-//! at most 1 (the tolerance only shrinks `z`) and the blocks independent,
-//! so `S_w` is about a standard normal: the image fails when
-//! `max_w |S_w|` exceeds the two-sided normal quantile at `alpha / W` over
-//! the `W` windows (Bonferroni; overlapping windows make it conservative).
+//! Under a correct renderer the terms are about symmetric about 0 (a
+//! block mean of 256 pixels is near normal), their variance at most 1
+//! (the tolerance only shrinks `z`), and the blocks independent, so `S_w`
+//! is about a standard normal: the image fails when `max_w |S_w|` exceeds
+//! the two-sided normal quantile at `alpha / W` over the `W` windows
+//! (Bonferroni, conservative however the windows overlap). The rate is a
+//! normal approximation, not a bound; `tests/check.rs` measures it.
 //! A region brighter or darker than the course's shifts every term of its
 //! windows the same way, `S_w` by up to `3 sqrt(m)` = 9; a block with a
 //! firefly moves its one term, `S_w` by at most `3 / sqrt(m)` = 1, well
 //! below the battery's thresholds (about 4.8).
 
-use super::stats::{block_index, normal_upper_quantile, NullModel, BLOCK};
+use super::stats::{normal_upper_quantile, NullModel, BLOCK};
 
 /// A window's side, in blocks.
 pub const WINDOW: u32 = 3;
@@ -55,10 +57,14 @@ impl Scan {
 /// The scan of the cells `x` (per block, `channels` each, in the order of
 /// [`super::stats::block_means`]), whose `z` against `model` are `z`, at
 /// false-alarm rate `alpha`.
-pub fn scan(model: &NullModel, x: &[f64], z: &[f64], alpha: f64) -> Scan {
+///
+/// # Panics
+///
+/// If `channels` is 0 or `x` and `z` have not `channels` cells a block.
+pub fn scan(model: &NullModel, x: &[f64], z: &[f64], channels: usize, alpha: f64) -> Scan {
     let (bw, bh) = (model.width.div_ceil(BLOCK), model.height.div_ceil(BLOCK));
-    let channels = x.len() / (bw * bh).max(1) as usize;
-    let term: Vec<f64> = (0..x.len() / channels.max(1))
+    assert!(channels > 0 && x.len() == (bw * bh) as usize * channels && z.len() == x.len());
+    let term: Vec<f64> = (0..x.len() / channels)
         .map(|b| {
             let cells = b * channels..(b + 1) * channels;
             let signed =
@@ -79,9 +85,7 @@ pub fn scan(model: &NullModel, x: &[f64], z: &[f64], alpha: f64) -> Scan {
             let mut sum = 0.0;
             for dy in 0..WINDOW {
                 for dx in 0..WINDOW {
-                    let (px, py) = ((bx + dx) * BLOCK, (by + dy) * BLOCK);
-                    let b = block_index(px, py, model.width);
-                    sum += term[b];
+                    sum += term[((by + dy) * bw + bx + dx) as usize];
                 }
             }
             let s = sum / m.sqrt();
@@ -128,7 +132,7 @@ mod tests {
     fn scanned(value: impl Fn(u32, u32) -> f64) -> Scan {
         let (model, x) = model_and_cells(value);
         let z = model.z_scores(&x);
-        scan(&model, &x, &z, 0.01)
+        scan(&model, &x, &z, 3, 0.01)
     }
 
     /// The threshold is the normal quantile at `alpha / (2 W)`: 24
@@ -151,7 +155,7 @@ mod tests {
         let region = |x, y| (3..6).contains(&x) && (2..5).contains(&y);
         let (model, x) = model_and_cells(|x, y| if region(x, y) { 0.48 } else { 0.5 });
         let z = model.z_scores(&x);
-        let s = scan(&model, &x, &z, 0.01);
+        let s = scan(&model, &x, &z, 3, 0.01);
         assert!((s.value - 4.97).abs() < 0.01, "{s:?}");
         assert!(!s.passes(), "{s:?}");
         assert!(!s.brighter);
@@ -167,7 +171,7 @@ mod tests {
     fn one_far_block_moves_a_window_by_its_cap_alone() {
         let (model, x) = model_and_cells(|x, y| if (x, y) == (4, 3) { 1.0 } else { 0.5 });
         let z = model.z_scores(&x);
-        let s = scan(&model, &x, &z, 0.01);
+        let s = scan(&model, &x, &z, 3, 0.01);
         assert!((s.value - 1.0).abs() < 1e-9, "{s:?}");
         assert!(s.passes(), "{s:?}");
     }

@@ -52,6 +52,14 @@ impl Plane {
         }
     }
 
+    /// Values a pixel, cells a block: RGB, or the one rate.
+    fn channels(self) -> usize {
+        match self {
+            Plane::Image => 3,
+            Plane::Rates => 1,
+        }
+    }
+
     /// The cells of `render` in this plane.
     fn cells(self, render: &Render) -> Vec<f64> {
         match (self, &render.rates) {
@@ -74,13 +82,13 @@ struct Decided {
 }
 
 impl Decided {
-    fn new(x: Vec<f64>, model: &NullModel, alpha: f64) -> Self {
-        let z = model.z_scores(&x);
+    fn new(x: &[f64], model: &NullModel, alpha: f64, channels: usize) -> Self {
+        let z = model.z_scores(x);
         Decided {
             statistic: stats::statistic(&z),
             threshold: chi_square_quantile(x.len() as f64, alpha / 2.0),
-            scan: scan(model, &x, &z, alpha / 2.0),
-            x,
+            scan: scan(model, x, &z, channels, alpha / 2.0),
+            x: x.to_vec(),
             z,
         }
     }
@@ -96,11 +104,12 @@ impl Decided {
     }
 }
 
-/// How far the cells `x` of an image are from `model` at false-alarm rate
-/// `alpha`, as a check decides its image: the larger of the statistic over
-/// its threshold and the scan over its own; above 1, the image fails.
-pub fn severity(model: &NullModel, x: Vec<f64>, alpha: f64) -> f64 {
-    Decided::new(x, model, alpha).severity()
+/// How far the cells `x` (`channels` a block) are from `model` at
+/// false-alarm rate `alpha`, as a check decides a plane: the larger of the
+/// statistic over its threshold and the scan over its own; above 1, it
+/// fails.
+pub fn severity(model: &NullModel, x: &[f64], channels: usize, alpha: f64) -> f64 {
+    Decided::new(x, model, alpha, channels).severity()
 }
 
 /// Runs `check` with `student` on the scene file `scene_file` (which
@@ -184,7 +193,7 @@ pub fn judge(
     let decided: Vec<Decided> = planes
         .iter()
         .zip(&models)
-        .map(|(p, m)| Decided::new(p.cells(&written), m, alpha))
+        .map(|(p, m)| Decided::new(&p.cells(&written), m, alpha, p.channels()))
         .collect();
     let images_of: Vec<Vec<u8>> = renders.iter().map(|r| r.image.clone()).collect();
     let mut images = CheckImages {
@@ -227,10 +236,12 @@ pub fn judge(
                 .collect();
             let (mut sum, mut fits) = (0.0, true);
             for ((plane, model), d) in planes.iter().zip(&models).zip(&decided) {
+                // Held to the mistake's images by both tests, as the
+                // student's image was to the course's.
                 let wrong = plane.model(&renders).widened(model);
-                let s = stats::statistic(&wrong.z_scores(&d.x));
-                sum += s;
-                fits &= s <= d.threshold;
+                let judged = Decided::new(&d.x, &wrong, alpha, plane.channels());
+                sum += judged.statistic;
+                fits &= judged.passes();
             }
             let suspect = Suspect {
                 mistake,
@@ -278,17 +289,8 @@ fn describe_planes(decided: &[Decided], models: &[NullModel], spp: u32) -> Strin
         if d.passes() {
             continue;
         }
-        parts.push(if i == 0 {
-            let mut what = describe(&d.x, &m.mean, &d.z);
-            if !d.scan.passes() {
-                let (x, y) = d.scan.at;
-                let side = WINDOW * BLOCK;
-                let how = if d.scan.brighter { "brighter" } else { "darker" };
-                what += &format!(
-                    "; a region {how} than the course's: the {side} x {side} pixels from ({x}, {y})"
-                );
-            }
-            what
+        let mut what = if i == 0 {
+            describe(&d.x, &m.mean, &d.z)
         } else {
             let (share, place) = differing_blocks(&d.z, 1);
             format!(
@@ -297,7 +299,22 @@ fn describe_planes(decided: &[Decided], models: &[NullModel], spp: u32) -> Strin
                 100.0 * rates::mean(&m.mean),
                 100.0 * share
             )
-        });
+        };
+        if !d.scan.passes() {
+            let (x, y) = d.scan.at;
+            let side = WINDOW * BLOCK;
+            let (how, by) = match (d.scan.brighter, i) {
+                (true, 0) => ("brighter", "the course's"),
+                (false, 0) => ("darker", "the course's"),
+                (true, _) => ("with more samples", "a correct solution's"),
+                (false, _) => ("with fewer samples", "a correct solution's"),
+            };
+            what += &format!(
+                "; a region {how} than {by}: the {side} x {side} pixels from ({x}, {y}) (the region test: {:.1} against {:.1})",
+                d.scan.value, d.scan.threshold
+            );
+        }
+        parts.push(what);
     }
     if decided.len() > 1 && decided[0].passes() {
         parts.insert(0, "the image is within the noise".into());

@@ -127,8 +127,10 @@ fn sample_tables(cdf: &[f32], guide: &[u32], u: f32) -> DistributionSample<f32> 
     }
 }
 
-/// The cell of `x` in `[0, 1]` among `n` (1 belongs to the last cell).
-fn cell_of(x: f32, n: usize) -> usize {
+/// The cell of `x` in `[0, 1]` among `n` (1 belongs to the last cell):
+/// how every table here finds a point's cell, and the environment map
+/// its cell's density.
+pub(crate) fn cell_of(x: f32, n: usize) -> usize {
     ((x * n as f32) as usize).min(n - 1)
 }
 
