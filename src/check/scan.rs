@@ -164,6 +164,43 @@ mod tests {
         assert!(sum < chi_square_quantile(144.0, 0.01), "{sum}");
     }
 
+    /// One channel (the rate image's cells), a brighter region, and the
+    /// last row of blocks only partly in the image (5.5 blocks high): the
+    /// window over the region's 3 x 3 blocks, brighter, 9 * 3 / 3 = 9;
+    /// an image of fewer than 3 x 3 blocks has no window and passes.
+    #[test]
+    fn one_channel_a_brighter_region_and_a_partial_row() {
+        let (w, h) = (8 * BLOCK, 5 * BLOCK + BLOCK / 2);
+        let blocks = 8 * 6;
+        let model = NullModel {
+            width: w,
+            height: h,
+            mean: vec![0.5; blocks],
+            variance: vec![1e-4; blocks],
+            renders: 1_000_000,
+        };
+        let region = |b: usize| (4..7).contains(&(b % 8)) && (3..6).contains(&(b / 8));
+        let x: Vec<f64> = (0..blocks)
+            .map(|b| if region(b) { 0.6 } else { 0.5 })
+            .collect();
+        let z = model.z_scores(&x);
+        let s = scan(&model, &x, &z, 1, 0.01);
+        assert!((s.value - 9.0).abs() < 1e-9, "{s:?}");
+        assert!(s.brighter && !s.passes());
+        assert_eq!(s.at, (4 * BLOCK, 3 * BLOCK));
+        let small = NullModel {
+            width: 2 * BLOCK,
+            height: 2 * BLOCK,
+            mean: vec![0.5; 4],
+            variance: vec![1e-4; 4],
+            renders: 8,
+        };
+        let far = [1.0; 4];
+        let s = scan(&small, &far, &small.z_scores(&far), 1, 0.01);
+        assert_eq!(s.value, 0.0);
+        assert!(s.passes());
+    }
+
     /// One block as bright as can be (a firefly's worst) counts `Z_CAP`:
     /// `3 / sqrt(9)` = 1 in each window that holds it, and passes; its
     /// `z` uncapped (49.5 a channel) would fail.

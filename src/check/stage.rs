@@ -150,15 +150,13 @@ impl Stage {
             adaptive: check.adaptive,
         };
         let rendered = exact.render(view, &self.accel, &tracer, &sampling);
+        let width = SIZE.0 as usize;
         let display: Vec<Rgb> = rendered
             .film
             .pixels
             .iter()
             .enumerate()
-            .map(|(k, &p)| {
-                let width = SIZE.0 as usize;
-                tone_map(p * gain(k % width, k / width))
-            })
+            .map(|(k, &p)| tone_map(p * gain(k % width, k / width)))
             .collect();
         let rates = check.adaptive.map(|_| {
             let taken: Vec<f64> = rendered

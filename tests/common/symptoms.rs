@@ -193,19 +193,20 @@ impl CourseView {
         let values = |tracer, seed| {
             let rendered = self.render(tracer, spp, None, seed);
             assert_eq!(rendered.rejected(), 0);
-            let values: Vec<f64> = pixels
+            pixels
                 .iter()
                 .map(|&i| luminance(rendered.estimates[i].radiance) as f64)
-                .collect();
-            values
+                .collect::<Vec<f64>>()
         };
         let pairs = [seed, seed + 1].map(|s| (values(right, s), values(wrong, s)));
         let sum = |v: &Vec<f64>| v.iter().sum::<f64>();
         let total_right: f64 = pairs.iter().map(|(r, _)| sum(r)).sum();
         let value = pairs.iter().map(|(_, w)| sum(w)).sum::<f64>() / total_right;
         let residuals = pairs.map(|(r, w)| {
-            let d: Vec<f64> = r.iter().zip(&w).map(|(r, w)| w - value * r).collect();
-            d
+            r.iter()
+                .zip(&w)
+                .map(|(r, w)| w - value * r)
+                .collect::<Vec<_>>()
         });
         let variance: f64 = residuals[0]
             .iter()
