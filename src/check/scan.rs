@@ -107,18 +107,23 @@ mod tests {
     use super::*;
     use crate::check::stats::{cells, chi_square_quantile};
 
-    /// A model of an 8 x 6 block image, grey 0.5 with each cell's
-    /// standard error 0.01, and the cells of an image `value(block)`.
+    /// A model of a `width x height` image of `cells` cells, each grey
+    /// 0.5 with standard error 0.01.
+    fn grey_model(width: u32, height: u32, cells: usize) -> NullModel {
+        NullModel {
+            width,
+            height,
+            mean: vec![0.5; cells],
+            variance: vec![1e-4; cells],
+            renders: 1_000_000,
+        }
+    }
+
+    /// The grey model of an 8 x 6 block RGB image and the cells of an
+    /// image `value(block)`.
     fn model_and_cells(value: impl Fn(u32, u32) -> f64) -> (NullModel, Vec<f64>) {
         let (w, h) = (8 * BLOCK, 6 * BLOCK);
-        let cells_n = 8 * 6 * 3;
-        let model = NullModel {
-            width: w,
-            height: h,
-            mean: vec![0.5; cells_n],
-            variance: vec![1e-4; cells_n],
-            renders: 1_000_000,
-        };
+        let model = grey_model(w, h, 8 * 6 * 3);
         let mut rgb = vec![0u8; (w * h * 3) as usize];
         for y in 0..h {
             for x in 0..w {
@@ -172,13 +177,7 @@ mod tests {
     fn one_channel_a_brighter_region_and_a_partial_row() {
         let (w, h) = (8 * BLOCK, 5 * BLOCK + BLOCK / 2);
         let blocks = 8 * 6;
-        let model = NullModel {
-            width: w,
-            height: h,
-            mean: vec![0.5; blocks],
-            variance: vec![1e-4; blocks],
-            renders: 1_000_000,
-        };
+        let model = grey_model(w, h, blocks);
         let region = |b: usize| (4..7).contains(&(b % 8)) && (3..6).contains(&(b / 8));
         let x: Vec<f64> = (0..blocks)
             .map(|b| if region(b) { 0.6 } else { 0.5 })
@@ -188,13 +187,7 @@ mod tests {
         assert!((s.value - 9.0).abs() < 1e-9, "{s:?}");
         assert!(s.brighter && !s.passes());
         assert_eq!(s.at, (4 * BLOCK, 3 * BLOCK));
-        let small = NullModel {
-            width: 2 * BLOCK,
-            height: 2 * BLOCK,
-            mean: vec![0.5; 4],
-            variance: vec![1e-4; 4],
-            renders: 8,
-        };
+        let small = grey_model(2 * BLOCK, 2 * BLOCK, 4);
         let far = [1.0; 4];
         let s = scan(&small, &far, &small.z_scores(&far), 1, 0.01);
         assert_eq!(s.value, 0.0);
