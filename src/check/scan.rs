@@ -72,7 +72,9 @@ pub fn scan(model: &NullModel, x: &[f64], z: &[f64], channels: usize, alpha: f64
             signed.sum::<f64>() / channels as f64
         })
         .collect();
-    let windows = bw.saturating_sub(WINDOW - 1) * bh.saturating_sub(WINDOW - 1);
+    // Where a window's upper left block may lie.
+    let (across, down) = (bw.saturating_sub(WINDOW - 1), bh.saturating_sub(WINDOW - 1));
+    let windows = across * down;
     let mut best = Scan {
         value: 0.0,
         threshold: normal_upper_quantile(alpha / (2.0 * windows.max(1) as f64)),
@@ -80,8 +82,8 @@ pub fn scan(model: &NullModel, x: &[f64], z: &[f64], channels: usize, alpha: f64
         brighter: true,
     };
     let m = (WINDOW * WINDOW) as f64;
-    for by in 0..bh.saturating_sub(WINDOW - 1) {
-        for bx in 0..bw.saturating_sub(WINDOW - 1) {
+    for by in 0..down {
+        for bx in 0..across {
             let mut sum = 0.0;
             for dy in 0..WINDOW {
                 for dx in 0..WINDOW {

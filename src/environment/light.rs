@@ -191,8 +191,7 @@ impl EnvironmentLight {
             EnvironmentSampling::Uniform => uniform_sphere_pdf(),
             EnvironmentSampling::Importance => {
                 let w = wi.normalize_or_zero();
-                let (_, density) = self.tables.map.lookup_with_density(direction_to_uv(w));
-                per_steradian(density, w)
+                per_steradian(self.tables.map.cell_density(direction_to_uv(w)), w)
             }
         }
     }

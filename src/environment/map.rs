@@ -235,8 +235,13 @@ impl EnvironmentMap {
     /// the four texels the lookup reads, so its density comes from a
     /// cache line already loaded.
     pub fn lookup_with_density(&self, uv: Vec2) -> (Rgb, f32) {
-        let radiance = self.bilinear(uv).truncate();
-        (radiance, self.texels[self.cell(uv)].w)
+        (self.lookup(uv), self.cell_density(uv))
+    }
+
+    /// The density set for the cell of `uv` by [`Self::set_cell_densities`]
+    /// (0 if none was), without the radiance.
+    pub fn cell_density(&self, uv: Vec2) -> f32 {
+        self.texels[self.cell(uv)].w
     }
 
     /// The four texels around `uv` interpolated, all four lanes.
