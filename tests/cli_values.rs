@@ -191,7 +191,7 @@ fn values_in_range_are_accepted_at_both_ends() {
     .unwrap();
     assert_eq!(
         (a.samples, a.threads, a.light_samples, a.max_depth),
-        (Some(1 << 20), Some(256), 1 << 16, Some(0))
+        (Some(1 << 20), Some(256), Some(1 << 16), Some(0))
     );
     assert_eq!((a.accumulate, a.seed), (0, u64::MAX));
     assert_eq!(a.lens_radius.to_bits(), 0.0f32.to_bits(), "-0 is 0");

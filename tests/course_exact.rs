@@ -84,6 +84,7 @@ fn the_starters_functions_agree_with_the_project_given_the_courses_choices() {
         let ours = PathTracer {
             direct: DirectStrategy::Lights(DirectLights {
                 samples_per_light: 1,
+                environment_samples: None,
                 mis: false,
             }),
             max_depth,

@@ -55,6 +55,7 @@ fn course_scenes_render_without_nan_or_infinity() {
         };
         let no_mis = DirectStrategy::Lights(DirectLights {
             samples_per_light: 2,
+            environment_samples: None,
             mis: false,
         });
         let runs = [

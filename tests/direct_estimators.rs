@@ -322,6 +322,7 @@ fn several_samples_and_lights_chosen_by_power() {
     let quads = World::new(&with_quads, &a2);
     let three = DirectStrategy::Lights(DirectLights {
         samples_per_light: 3,
+        environment_samples: None,
         mis: false,
     });
     let four = DirectStrategy::Hemisphere(DirectHemisphere { samples: 4 });

@@ -34,6 +34,7 @@ use pathtracer::lights::LightPdf;
 use pathtracer::math::rng::{next_2d, sampler};
 use pathtracer::math::warp::sample_uniform_sphere;
 use pathtracer::math::{luminance, Rgb};
+use pathtracer::plan::light_samples::{with_environment_samples, ENVIRONMENT_SAMPLES};
 use pathtracer::sampling::{IndependentSampler, Sampler};
 use pathtracer::scene::Scene;
 use pathtracer::world::World;
@@ -45,6 +46,7 @@ const SAMPLINGS: [EnvironmentSampling; 2] = [
 
 const NO_MIS: DirectStrategy = DirectStrategy::Lights(DirectLights {
     samples_per_light: 1,
+    environment_samples: None,
     mis: false,
 });
 
@@ -338,4 +340,40 @@ fn bad_map_files_give_errors_naming_the_file() {
         .to_string();
     assert!(err.contains("nan.exr"), "{err}");
     assert!(!out.exists());
+}
+
+/// The plan's environment samples (`plan::light_samples`): four samples
+/// of the map a vertex, where `-l` is not given, change the noise and not
+/// the image. Checked to fail by hand: with `DirectLights::strategy`
+/// ignoring `environment_samples` the standard errors are equal and the
+/// second assertion fails; with the MIS weight of an escaped ray left at
+/// one light sample (`samples: 1` in `found_emission`) the means differ.
+#[test]
+fn four_environment_samples_a_vertex_change_the_noise_not_the_image() {
+    let scene = sphere_on_floor();
+    let env = EnvironmentLight::new(lumpy_map(), EnvironmentSampling::Importance);
+    let accel = accel(&scene);
+    let world = World::new(&scene, &accel).with_environment(Some(env.clone()));
+    let one = tracer(LIGHTS, 3, true);
+    let (four, line) = with_environment_samples(&one, &world.lights);
+    assert!(line.contains("4 a vertex"), "{line}");
+    let DirectStrategy::Lights(d) = four.direct else {
+        panic!("the plan kept light sampling");
+    };
+    assert_eq!(d.environment_samples, Some(ENVIRONMENT_SAMPLES));
+    // Without a map the tracer is left as it was.
+    let (plain, line) = with_environment_samples(&one, &World::new(&scene, &accel).lights);
+    assert!(line.contains("no environment map"), "{line}");
+    assert!(matches!(plain.direct, DirectStrategy::Lights(d) if d.environment_samples.is_none()));
+
+    let n = 100_000;
+    let by_one = estimate(&scene, &env, &one, n, 501);
+    let by_four = estimate(&scene, &env, &four, n, 502);
+    assert_means_agree("four map samples a vertex vs one", by_one, by_four, ALPHA);
+    assert!(
+        by_four.se < 0.8 * by_one.se,
+        "four samples a vertex should be less noisy: {} vs {}",
+        by_four.se,
+        by_one.se
+    );
 }

@@ -123,6 +123,7 @@ fn strategies() -> [(&'static str, DirectStrategy); 3] {
             "light sampling with MIS",
             DirectStrategy::Lights(DirectLights {
                 samples_per_light: 1,
+                environment_samples: None,
                 mis: true,
             }),
         ),

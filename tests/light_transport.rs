@@ -27,6 +27,7 @@ fn strategies() -> [(&'static str, DirectStrategy); 4] {
     let lights = |mis| {
         DirectStrategy::Lights(DirectLights {
             samples_per_light: 1,
+            environment_samples: None,
             mis,
         })
     };
@@ -256,6 +257,7 @@ fn strategies_agree_on_a_glossy_floor() {
     let with = |mis, samples_per_light| {
         DirectStrategy::Lights(DirectLights {
             samples_per_light,
+            environment_samples: None,
             mis,
         })
     };
@@ -364,6 +366,7 @@ fn many_lights_chosen_by_power_give_the_closed_form() {
         for (j, mis) in [true, false].into_iter().enumerate() {
             let direct = DirectStrategy::Lights(DirectLights {
                 samples_per_light: 2,
+                environment_samples: None,
                 mis,
             });
             let seed = 500 + 10 * k as u64 + j as u64;

@@ -146,6 +146,7 @@ fn cbbunny_framing_and_brightness_against_the_course_render() {
     let tracer = PathTracer {
         direct: DirectStrategy::Lights(DirectLights {
             samples_per_light: 1,
+            environment_samples: None,
             mis: true,
         }),
         max_depth: 5,

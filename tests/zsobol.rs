@@ -224,6 +224,7 @@ impl CornellRenders {
         let tracer = PathTracer {
             direct: DirectStrategy::Lights(DirectLights {
                 samples_per_light: 1,
+                environment_samples: None,
                 mis: true,
             }),
             max_depth,

@@ -12,6 +12,12 @@ which needs no converged reference and has no reference noise in it. With a
 scrambled low-discrepancy sampler, different seeds are independent
 randomisations, so the same identity holds.
 
+Each renderer runs its own default estimator at the same samples per
+pixel: Mitsuba's path tracer one emitter sample a vertex, this project
+the render plan's (one sample a vertex of each light in the scene, four
+of an environment map: `plan::light_samples`). `-- -l 1` after the
+options gives every light of ours one sample, as the course's `-l 1`.
+
 For each scene and repetition: this project renders twice (`--seed 0`,
 `--seed 1`; time from its `render: S s` line, which excludes loading and
 the BVH build), then Mitsuba renders seeds 0 and 1 in one process
@@ -178,7 +184,7 @@ def main():
             images = []
             for seed in (0, 1):
                 path = os.path.join(a.out, f"{name}-ours-{seed}.exr")
-                cmd = [a.pathtracer, scene, "-r", str(w), str(h), "-s", str(a.spp), "-l", "1",
+                cmd = [a.pathtracer, scene, "-r", str(w), str(h), "-s", str(a.spp),
                        "-m", str(depth), "-t", str(a.threads), "--seed", str(seed), "-f", path]
                 cmd += ["-e", env] if env else []
                 out = run(cmd + extra, log)

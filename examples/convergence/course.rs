@@ -34,6 +34,7 @@ pub fn render_direct(setup: &Setup, spp: u32, samples_per_light: u32, course: bo
     // Light sampling alone: without the BSDF half, no MIS weights.
     let direct = DirectLights {
         samples_per_light,
+        environment_samples: None,
         mis: false,
     };
     render_image(&setup.camera, &settings, None, |ray, rng| {

@@ -25,6 +25,7 @@ fn tracer(roulette: Roulette) -> PathTracer {
     PathTracer {
         direct: DirectStrategy::Lights(DirectLights {
             samples_per_light: 1,
+            environment_samples: None,
             mis: true,
         }),
         max_depth: 8,

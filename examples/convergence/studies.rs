@@ -47,6 +47,7 @@ fn lights(samples_per_light: u32, max_depth: u32, russian_roulette: bool) -> Pat
     PathTracer {
         direct: DirectStrategy::Lights(DirectLights {
             samples_per_light,
+            environment_samples: None,
             mis: true,
         }),
         max_depth,

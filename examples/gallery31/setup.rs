@@ -117,6 +117,7 @@ impl Setup {
 pub fn lights(l: u32) -> DirectStrategy {
     DirectStrategy::Lights(DirectLights {
         samples_per_light: l,
+        environment_samples: None,
         mis: true,
     })
 }

@@ -82,10 +82,12 @@ pub struct CourseArgs {
     #[arg(short = 'f', value_name = "FILE")]
     pub output: Option<PathBuf>,
 
-    /// Samples per area light (and per light for the ambient sky).
-    #[arg(short = 'l', value_name = "N", default_value_t = 1, allow_hyphen_values = true,
+    /// Samples per area light (and per light for the ambient sky) at each
+    /// path vertex [default: 1; an environment map (-e) 4, where the render
+    /// plan is on and not in the course's modes: --info says so].
+    #[arg(short = 'l', value_name = "N", allow_hyphen_values = true,
           value_parser = Number(whole(1u32, 1 << 16)))]
-    pub light_samples: u32,
+    pub light_samples: Option<u32>,
 
     /// Maximum ray depth: bounces of light (0 shows only emitters)
     /// [default: 1 with a scene file (the course's: direct light only), 5

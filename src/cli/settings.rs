@@ -33,6 +33,12 @@ impl CourseArgs {
         self.samples.unwrap_or(self.defaults().samples)
     }
 
+    /// Light samples a vertex where the plan does not choose them (the
+    /// course's modes, `-H`): `-l`, else 1.
+    pub fn light_samples(&self) -> u32 {
+        self.light_samples.unwrap_or(1)
+    }
+
     /// Maximum ray depth: `-m`, else [`CourseArgs::defaults`].
     pub fn max_depth(&self) -> u32 {
         self.max_depth.unwrap_or(self.defaults().max_depth)

@@ -5,7 +5,7 @@ use glam::Vec3;
 use crate::global::emission::{found_emission, PrevVertex};
 use crate::global::DirectStrategy;
 use crate::intersect::Intersector;
-use crate::lights::{LightChoice, LightPdf, LightSample, LightSet, LightStrategy};
+use crate::lights::{Light, LightChoice, LightPdf, LightSample, LightSet, LightStrategy};
 use crate::math::mis::power_heuristic;
 use crate::math::warp::{sample_uniform_hemisphere, uniform_hemisphere_pdf};
 use crate::math::Rgb;
@@ -84,6 +84,10 @@ pub struct DirectLights {
     /// Samples per non-delta light, or in all when lights are chosen by
     /// power (`-l`).
     pub samples_per_light: u32,
+    /// Samples of an environment light where every light is sampled;
+    /// `None`: `samples_per_light`, as for the others (the render plan
+    /// sets it where `-l` is not given: [`crate::plan::light_samples`]).
+    pub environment_samples: Option<u32>,
     /// Weight light samples against BSDF sampling (off: `--no-mis`, the
     /// course's estimator).
     pub mis: bool,
@@ -92,9 +96,16 @@ pub struct DirectLights {
 impl DirectLights {
     /// How the light strategy samples light `index` of `lights`.
     pub fn strategy(&self, lights: &LightSet, index: usize) -> LightStrategy {
-        lights
-            .choice()
-            .strategy(index, &lights.lights[index], self.samples_per_light)
+        let light = &lights.lights[index];
+        let samples = match (light, self.environment_samples) {
+            (Light::Environment(_), Some(n))
+                if matches!(lights.choice(), LightChoice::EveryLight) =>
+            {
+                n
+            }
+            _ => self.samples_per_light,
+        };
+        lights.choice().strategy(index, light, samples)
     }
 
     #[doc(alias = "estimate_direct_lighting_importance")]

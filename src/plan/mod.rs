@@ -7,12 +7,16 @@
 //! | light sampling | some light can be sampled and some surface scatters non-deltas | nothing: the integrator skips it at delta vertices anyway; the plan reports it |
 //! | multiple importance sampling | a light BSDF rays can find (area, emissive triangles, sky) and a non-delta BSDF | the BSDF density per light sample and the last ray of every path |
 //! | lens | `-b > 0` | the lens sample and its disk warp per camera ray |
+//! | environment samples ([`light_samples`]) | an environment map lights the scene and `-l` is not given | nothing: four samples of the map a vertex instead of one, less noise per second |
 //! | caustic casters | a mirror, glass or smooth conductor sphere (and not `--casters off`) | nothing: it adds a sampling strategy where a scene has caustics, and costs nothing where it has none |
 //!
 //! Specialising changes no expectation: the plan only drops work whose
-//! result is zero or whose weight is 1 (MIS with no second strategy). The
+//! result is zero or whose weight is 1 (MIS with no second strategy), or
+//! splits a light's sample into several whose mean estimates the same. The
 //! plan also says when a flag hides an effect the scene has: a mirror shows
 //! lit surfaces only from `-m 2`, glass shows light through it from `-m 3`.
+
+pub mod light_samples;
 
 use crate::depth_of_field::ThinLens;
 use crate::direct::DirectLights;

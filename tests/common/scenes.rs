@@ -19,12 +19,14 @@ use super::stats::MeanEstimate;
 /// Direct light by sampling each light once.
 pub const LIGHTS: DirectStrategy = DirectStrategy::Lights(DirectLights {
     samples_per_light: 1,
+    environment_samples: None,
     mis: true,
 });
 /// Direct light by sampling each light once, without MIS: emission a
 /// BSDF ray finds on a sampled light is not counted.
 pub const LIGHTS_ALONE: DirectStrategy = DirectStrategy::Lights(DirectLights {
     samples_per_light: 1,
+    environment_samples: None,
     mis: false,
 });
 /// Direct light by one uniform hemisphere direction.

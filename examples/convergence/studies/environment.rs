@@ -20,6 +20,7 @@ pub fn environment(options: &Options) -> Result<()> {
     let with = |mis| {
         DirectStrategy::Lights(DirectLights {
             samples_per_light: 1,
+            environment_samples: None,
             mis,
         })
     };

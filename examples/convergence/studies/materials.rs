@@ -31,6 +31,7 @@ pub fn materials(options: &Options) -> Result<()> {
     };
     let mis = with(DirectStrategy::Lights(DirectLights {
         samples_per_light: 1,
+        environment_samples: None,
         mis: true,
     }));
     let reference = setup.reference(&mis, 2048);
@@ -53,6 +54,7 @@ pub fn materials(options: &Options) -> Result<()> {
     let visible = MicrofacetSampling::VisibleNormals;
     let light_only = with(DirectStrategy::Lights(DirectLights {
         samples_per_light: 1,
+        environment_samples: None,
         mis: false,
     }));
     let strategies = [

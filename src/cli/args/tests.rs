@@ -25,7 +25,7 @@ fn course_flags_parse() {
     .unwrap();
     assert_eq!(
         (b.light_samples, b.max_depth(), b.accumulate, b.hemisphere),
-        (4, 5, 0, true)
+        (Some(4), 5, 0, true)
     );
     assert_eq!(
         b.adaptive_settings(),
@@ -63,7 +63,10 @@ fn defaults_are_the_course_defaults_with_a_scene_file() {
         (1, 1, 800, 600)
     );
     assert_eq!(a.render_settings().samples_per_pixel, 1);
-    assert_eq!((a.light_samples, a.accumulate, a.hemisphere), (1, 1, false));
+    assert_eq!(
+        (a.light_samples, a.accumulate, a.hemisphere),
+        (None, 1, false)
+    );
     assert_eq!(a.adaptive_settings(), Ok(None));
     assert_eq!(a.output_path(), PathBuf::from("s.png"));
 }
@@ -81,7 +84,10 @@ fn without_a_scene_file_the_defaults_are_the_builtin_render() {
         (settings.samples_per_pixel, settings.width, settings.height),
         (64, 480, 360)
     );
-    assert_eq!((a.light_samples, a.accumulate, a.hemisphere), (1, 1, false));
+    assert_eq!(
+        (a.light_samples, a.accumulate, a.hemisphere),
+        (None, 1, false)
+    );
     assert_eq!(a.adaptive_settings(), Ok(None));
     assert_eq!(a.output_path(), PathBuf::from("cornell-box.png"));
     // Flags still override: the course's render of the built-in scene.

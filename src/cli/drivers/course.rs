@@ -65,7 +65,7 @@ fn run(args: &CourseArgs, part: CoursePart, exact: CourseExact) -> Result<()> {
     let environment = environment_light(args, exact.environment_weights())?;
     let tracer = StarterTracer {
         direct: StarterDirect::from_hemisphere(args.hemisphere),
-        light_samples: args.light_samples,
+        light_samples: args.light_samples(),
         max_depth: if part.direct_only {
             1
         } else {

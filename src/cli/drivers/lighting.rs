@@ -15,6 +15,7 @@ use crate::environment::{
 use crate::global::{DirectStrategy, PathTracer, Roulette};
 use crate::intersect::Intersector;
 use crate::lights::LightSet;
+use crate::plan::light_samples::with_environment_samples;
 use crate::plan::Plan;
 use crate::raygen::Camera;
 use crate::render::rendered::rate_image_path;
@@ -48,11 +49,12 @@ pub fn direct_strategy(args: &CourseArgs, scene: &Scene) -> DirectStrategy {
     } else if args.hemisphere {
         let lights = scene.lights.len().max(1) as u32;
         DirectStrategy::Hemisphere(DirectHemisphere {
-            samples: lights * args.light_samples,
+            samples: lights * args.light_samples(),
         })
     } else {
         DirectStrategy::Lights(DirectLights {
-            samples_per_light: args.light_samples,
+            samples_per_light: args.light_samples(),
+            environment_samples: None,
             mis: !args.no_mis,
         })
     }
@@ -124,6 +126,9 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
         for line in &plan.lines {
             crate::say!("{line}")?;
         }
+        if args.light_samples.is_none() && !args.no_plan {
+            crate::say!("{}", with_environment_samples(&part.tracer, &lights).1)?;
+        }
         for w in &plan.warnings {
             crate::say!("plan: note: {w}")?;
         }
@@ -136,10 +141,10 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
     for warning in &plan.warnings {
         crate::say_err!("warning: {}: {warning}", scene.source);
     }
-    let tracer = if args.no_plan {
-        part.tracer
-    } else {
-        plan.specialise(&part.tracer)
+    let tracer = match (args.no_plan, args.light_samples) {
+        (true, _) => part.tracer,
+        (false, Some(_)) => plan.specialise(&part.tracer),
+        (false, None) => with_environment_samples(&plan.specialise(&part.tracer), &world.lights).0,
     };
     let settings = args.render_settings();
     let rendered = render_lighting(&world, &tracer, &camera, &settings, part.adaptive);
