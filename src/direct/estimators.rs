@@ -1,6 +1,6 @@
 //! The two direct-lighting estimators of part 3.
 
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 
 use crate::global::emission::{found_emission, PrevVertex};
 use crate::global::DirectStrategy;
@@ -11,6 +11,11 @@ use crate::math::warp::{sample_uniform_hemisphere, uniform_hemisphere_pdf};
 use crate::math::Rgb;
 use crate::sampling::Sampler;
 use crate::world::{ShadingPoint, World};
+
+/// Light samples drawn at once, so that the cache misses of one light's
+/// samples overlap ([`Light::prefetch_sample`]: an environment map's rows
+/// are megabytes of tables read at random).
+const BATCH: usize = 8;
 
 /// Direct lighting by uniform hemisphere sampling (`-H`).
 ///
@@ -122,11 +127,30 @@ impl DirectLights {
                 for (index, light) in lights.lit() {
                     let strategy = self.strategy(lights, index);
                     let mut sum = Rgb::ZERO;
-                    for _ in 0..strategy.samples {
-                        let uc = sampler.get_1d();
-                        if let Some(sample) = light.sample_li(point.hit.p, uc, sampler.get_2d()) {
-                            sum += self.contribution(world, point, &sample, strategy);
+                    let mut left = strategy.samples as usize;
+                    while left > 0 {
+                        // A batch's numbers are drawn in the order one
+                        // sample at a time would draw them, so the image
+                        // is the same; their misses overlap.
+                        let count = left.min(BATCH);
+                        let mut numbers = [(0.0, Vec2::ZERO); BATCH];
+                        for n in &mut numbers[..count] {
+                            *n = (sampler.get_1d(), sampler.get_2d());
+                            if count > 1 {
+                                light.prefetch_sample(n.1);
+                            }
                         }
+                        if count > 1 {
+                            for &(_, u) in &numbers[..count] {
+                                light.prefetch_cell(u);
+                            }
+                        }
+                        for &(uc, u) in &numbers[..count] {
+                            if let Some(sample) = light.sample_li(point.hit.p, uc, u) {
+                                sum += self.contribution(world, point, &sample, strategy);
+                            }
+                        }
+                        left -= count;
                     }
                     total += sum / strategy.samples as f32;
                 }

@@ -184,6 +184,27 @@ impl EnvironmentLight {
         })
     }
 
+    /// Starts loading what [`Self::sample_li`] at `u` will read first (see
+    /// [`crate::math::distribution::Distribution2D::prefetch`]); nothing
+    /// else.
+    #[inline]
+    pub fn prefetch_sample(&self, u: Vec2) {
+        if self.sampling == EnvironmentSampling::Importance {
+            self.tables.distribution.prefetch(u);
+        }
+    }
+
+    /// The second step after [`Self::prefetch_sample`]: the row's cdf and
+    /// the texels where the sample will land.
+    #[inline]
+    pub fn prefetch_cell(&self, u: Vec2) {
+        if self.sampling == EnvironmentSampling::Importance {
+            let map = &self.tables.map;
+            (self.tables.distribution)
+                .prefetch_cell(u, |row, column| map.prefetch_around(column, row));
+        }
+    }
+
     /// Density per steradian with which [`Self::sample_li`] picks the
     /// direction `wi`: `p(u, v) / (2 pi^2 sin(theta))`, 0 at the poles.
     pub fn pdf_li(&self, wi: Vec3) -> f32 {
@@ -209,6 +230,13 @@ impl EnvironmentLight {
             EnvironmentSampling::Importance => per_steradian(density, w),
         };
         (radiance, pdf)
+    }
+
+    /// Starts loading the texels [`Self::escaped`] in the unit direction
+    /// `w` reads, for a ray that may escape; nothing else.
+    #[inline]
+    pub fn prefetch_escape(&self, w: Vec3) {
+        self.tables.map.prefetch_uv(direction_to_uv(w));
     }
 
     /// Radiance seen along a ray that escapes in the unit direction `w`.

@@ -277,6 +277,12 @@ impl EnvironmentMap {
         }
     }
 
+    /// Starts loading the texels a look-up at `uv` reads; nothing else.
+    #[inline]
+    pub fn prefetch_uv(&self, uv: Vec2) {
+        self.prefetch_around(cell_of(uv.x, self.width), cell_of(uv.y, self.height));
+    }
+
     /// Radiance arriving from the unit direction `d`.
     pub fn radiance(&self, d: Vec3) -> Rgb {
         self.lookup(direction_to_uv(d))

@@ -148,6 +148,34 @@ impl Light {
         }
     }
 
+    /// Starts loading the memory [`Self::sample_li`] at `u` will read first,
+    /// where that is a cache miss worth overlapping (an environment map's
+    /// tables); changes nothing.
+    #[inline]
+    pub fn prefetch_sample(&self, u: Vec2) {
+        if let Light::Environment(l) = self {
+            l.prefetch_sample(u);
+        }
+    }
+
+    /// Starts loading what a ray escaping along `w` will read of this
+    /// light (an environment map's texels), while the ray is traced.
+    #[inline]
+    pub fn prefetch_escape(&self, w: Vec3) {
+        if let Light::Environment(l) = self {
+            l.prefetch_escape(w);
+        }
+    }
+
+    /// The second step after [`Self::prefetch_sample`], once its loads
+    /// have had time to arrive.
+    #[inline]
+    pub fn prefetch_cell(&self, u: Vec2) {
+        if let Light::Environment(l) = self {
+            l.prefetch_cell(u);
+        }
+    }
+
     /// Density per steradian with which [`Self::sample_li`] picks the unit
     /// direction `wi` from `p`. `hit` is where the ray met the light, for
     /// lights made of scene geometry (emissive triangles); the rectangle
