@@ -62,9 +62,11 @@ fn each_fails_and_is_named_first(part: u8, mistakes: &[Mistake]) {
                 suspects,
                 statistic,
                 threshold,
+                region,
+                region_threshold,
             } => {
                 eprintln!(
-                    "{mistake}: {statistic:.0} of {threshold:.0}; {what}; {:?}",
+                    "{mistake}: {statistic:.0} of {threshold:.0}, region {region:.1} of {region_threshold:.1}; {what}; {:?}",
                     &suspects[..2]
                 );
                 assert!(

@@ -20,13 +20,21 @@ pub struct Suspect {
 #[derive(Clone, Debug, PartialEq)]
 pub enum Outcome {
     /// Both tests passed: `statistic <= threshold` ([`super::stats::statistic`]
-    /// and its chi-square quantile) and the region test ([`super::scan`]).
-    Pass { statistic: f64, threshold: f64 },
-    /// One test failed or both; `statistic` and `threshold` are the sum's
-    /// (a failure of the region test says so in `what`).
+    /// and its chi-square quantile) and `region <= region_threshold` (the
+    /// region test, [`super::scan`]: its largest window).
+    Pass {
+        statistic: f64,
+        threshold: f64,
+        region: f64,
+        region_threshold: f64,
+    },
+    /// One test failed or both (the values as for a pass; `what` says
+    /// which, and where).
     Fail {
         statistic: f64,
         threshold: f64,
+        region: f64,
+        region_threshold: f64,
         /// What differs and where, in words.
         what: String,
         /// The mistakes that fit, best first, then the rest by misfit.

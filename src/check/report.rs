@@ -102,19 +102,28 @@ fn section(i: usize, r: &CheckResult) -> String {
         Outcome::Pass {
             statistic,
             threshold,
+            region,
+            region_threshold,
         } => {
-            let _ = write!(html, "<p>Within the noise of a correct solution: the image's statistic {statistic:.1}, threshold {threshold:.1}.</p>");
+            let _ = write!(
+                html,
+                "<p>Within the noise of a correct solution. {}</p>",
+                tests(*statistic, *threshold, *region, *region_threshold)
+            );
         }
         Outcome::Fail {
             statistic,
             threshold,
+            region,
+            region_threshold,
             what,
             ..
         } => {
             let _ = write!(
                 html,
-                "<p>{}. The image's statistic {statistic:.1}, threshold {threshold:.1}.</p>",
-                escape(what)
+                "<p>{}. {}</p>",
+                escape(what),
+                tests(*statistic, *threshold, *region, *region_threshold)
             );
         }
         Outcome::Skipped(why) | Outcome::Error(why) => {
@@ -150,6 +159,14 @@ fn section(i: usize, r: &CheckResult) -> String {
         html += "</ol>";
     }
     html + "</section>\n"
+}
+
+/// Both tests' values, each against its threshold: the sum over every
+/// cell and the region test's largest window ([`crate::check::scan`]).
+fn tests(statistic: f64, threshold: f64, region: f64, region_threshold: f64) -> String {
+    format!(
+        "The image's statistic {statistic:.1}, threshold {threshold:.1}; the region test's {region:.1}, threshold {region_threshold:.1}."
+    )
 }
 
 fn figures(images: &CheckImages) -> String {

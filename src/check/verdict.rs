@@ -217,12 +217,15 @@ pub fn judge(
         }),
     };
     let (statistic, threshold) = (decided[0].statistic, decided[0].threshold);
+    let (region, region_threshold) = (decided[0].scan.value, decided[0].scan.threshold);
     if decided.iter().all(Decided::passes) {
         return CheckResult {
             images: Some(images),
             ..result(Outcome::Pass {
                 statistic,
                 threshold,
+                region,
+                region_threshold,
             })
         };
     }
@@ -267,6 +270,8 @@ pub fn judge(
         ..result(Outcome::Fail {
             statistic,
             threshold,
+            region,
+            region_threshold,
             what,
             suspects: suspects.into_iter().map(|(s, _)| s).collect(),
         })

@@ -136,7 +136,12 @@ pub fn all_pass(results: Vec<CheckResult>) {
             Outcome::Pass {
                 statistic,
                 threshold,
-            } => eprintln!("{}: {statistic:.1} of {threshold:.1}", r.check.name),
+                region,
+                region_threshold,
+            } => eprintln!(
+                "{}: {statistic:.1} of {threshold:.1}, region {region:.1} of {region_threshold:.1}",
+                r.check.name
+            ),
             other => panic!("{}: {other:?}", r.check.name),
         }
     }
@@ -158,6 +163,35 @@ pub fn report_is_whole(results: &[CheckResult], dir: &Path) {
         .filter(|n| n.has_tag_name("section"))
         .count();
     assert_eq!(sections, results.len());
+    // Each judged check shows both tests' values against their thresholds.
+    let sections = doc.descendants().filter(|n| n.has_tag_name("section"));
+    for (section, r) in sections.zip(results) {
+        let text: String = section.descendants().filter_map(|n| n.text()).collect();
+        if let Outcome::Pass {
+            statistic,
+            region,
+            region_threshold,
+            ..
+        }
+        | Outcome::Fail {
+            statistic,
+            region,
+            region_threshold,
+            ..
+        } = r.outcome
+        {
+            for shown in [
+                format!("statistic {statistic:.1}"),
+                format!("the region test's {region:.1}, threshold {region_threshold:.1}"),
+            ] {
+                assert!(
+                    text.contains(&shown),
+                    "{}: no '{shown}' in {text}",
+                    r.check.name
+                );
+            }
+        }
+    }
     let images: Vec<_> = doc
         .descendants()
         .filter(|n| n.has_tag_name("img"))
