@@ -7,7 +7,10 @@
 //! - legal files load with the right size and values: Radiance pictures
 //!   headed `#?RGBE`, run-length encoded old and new style, stored bottom
 //!   up, with an `EXPOSURE`; an OpenEXR image whose data window is not its
-//!   display window; a 16384 x 8192 map.
+//!   display window; a 16384 x 8192 map; half-float RGBA OpenEXR and
+//!   Radiance pictures written by the `image` and `exr` crates;
+//! - a bad map given to a part's binary is an error naming the file, and
+//!   no image is written.
 
 use std::path::{Path, PathBuf};
 
@@ -307,4 +310,98 @@ fn a_16384_by_8192_map_loads() {
     let value = rgbe([128, 64, 192], 131);
     assert_eq!(map.texel(16383, 8191), value);
     assert_eq!(map.texel(8000, 4000), value);
+}
+
+// --- Through the image crate's encoders, and a binary's driver ---
+
+fn write_exr_f32(path: &Path, width: u32, height: u32, texels: &[f32]) {
+    image::Rgb32FImage::from_raw(width, height, texels.to_vec())
+        .unwrap()
+        .save(path)
+        .unwrap();
+}
+
+#[test]
+fn half_float_rgba_exr_and_radiance_hdr_maps_are_read() {
+    let dir = tempfile::tempdir().unwrap();
+    let exr = dir.path().join("half.exr");
+    exr::prelude::write_rgba_file(&exr, 8, 4, |x, y| {
+        let v = exr::prelude::f16::from_f32((x + 8 * y) as f32 / 4.0);
+        (
+            v,
+            v,
+            exr::prelude::f16::from_f32(0.5),
+            exr::prelude::f16::ONE,
+        )
+    })
+    .unwrap();
+    let map = EnvironmentMap::load(&exr).unwrap();
+    assert_eq!((map.width(), map.height()), (8, 4));
+    assert_eq!(map.texel(3, 2), Rgb::new(4.75, 4.75, 0.5));
+
+    let hdr = dir.path().join("sky.hdr");
+    let pixels: Vec<image::Rgb<f32>> = (0..32).map(|k| image::Rgb([k as f32, 1.0, 0.25])).collect();
+    let file = std::fs::File::create(&hdr).unwrap();
+    image::codecs::hdr::HdrEncoder::new(file)
+        .encode(&pixels, 8, 4)
+        .unwrap();
+    let map = EnvironmentMap::load(&hdr).unwrap();
+    assert_eq!((map.width(), map.height()), (8, 4));
+    // RGBE keeps 8 bits of mantissa per channel.
+    let t = map.texel(5, 1);
+    assert!(
+        (t - Rgb::new(13.0, 1.0, 0.25)).abs().max_element() < 0.1,
+        "{t}"
+    );
+}
+
+#[test]
+fn bad_map_files_give_errors_naming_the_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = |name: &str| dir.path().join(name);
+    std::fs::write(path("text.exr"), "not an image").unwrap();
+    image::RgbImage::new(8, 4).save(path("ldr.png")).unwrap();
+    write_exr_f32(&path("square.exr"), 4, 4, &[1.0; 48]);
+    let mut nan = vec![1.0; 8 * 4 * 3];
+    nan[7] = f32::NAN;
+    write_exr_f32(&path("nan.exr"), 8, 4, &nan);
+    let mut negative = vec![1.0; 8 * 4 * 3];
+    negative[40] = -2.0;
+    write_exr_f32(&path("negative.exr"), 8, 4, &negative);
+    let mut infinite = vec![1.0; 8 * 4 * 3];
+    infinite[3] = f32::INFINITY;
+    write_exr_f32(&path("infinite.exr"), 8, 4, &infinite);
+    for (name, expect) in [
+        ("missing.exr", "cannot open"),
+        ("text.exr", "cannot decode"),
+        ("ldr.png", "OpenEXR"),
+        ("square.exr", "4 x 4"),
+        ("nan.exr", "texel (2, 0)"),
+        ("negative.exr", "texel (5, 1)"),
+        ("infinite.exr", "texel (1, 0)"),
+    ] {
+        let err = EnvironmentMap::load(&path(name)).unwrap_err().to_string();
+        eprintln!("{err}");
+        assert!(
+            err.contains(name) && err.contains(expect),
+            "{name}: {err} (expected {expect:?})"
+        );
+    }
+    // Through a binary's driver: an error, not a panic, and no image.
+    let out = path("out.png");
+    let args = <pathtracer::cli::CourseArgs as clap::Parser>::parse_from([
+        "part7",
+        "-r",
+        "8",
+        "6",
+        "-e",
+        path("nan.exr").to_str().unwrap(),
+        "-f",
+        out.to_str().unwrap(),
+    ]);
+    let err = pathtracer::cli::drivers::part7(&args)
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("nan.exr"), "{err}");
+    assert!(!out.exists());
 }
