@@ -20,8 +20,8 @@
 mod common;
 
 use common::{
-    accel, assert_mean_matches, assert_means_agree, diffuse, tracer, MeanEstimate, SceneBuilder,
-    ALPHA, HEMISPHERE, LIGHTS,
+    accel, assert_mean_matches, assert_means_agree, diffuse, rect_light, tracer, MeanEstimate,
+    SceneBuilder, ALPHA, HEMISPHERE, LIGHTS,
 };
 use glam::{Vec2, Vec3};
 use pathtracer::direct::DirectLights;
@@ -284,20 +284,78 @@ fn four_environment_samples_a_vertex_change_the_noise_not_the_image() {
     );
 }
 
+/// A sampler that logs the kind of each draw: 1 for a number, 2 for a pair.
+struct Logged {
+    inner: IndependentSampler,
+    log: Vec<u8>,
+}
+
+impl Sampler for Logged {
+    fn start_pixel_sample(&mut self, pixel: (u32, u32), index: u32) {
+        self.inner.start_pixel_sample(pixel, index);
+    }
+    fn get_1d(&mut self) -> f32 {
+        self.log.push(1);
+        self.inner.get_1d()
+    }
+    fn get_2d(&mut self) -> Vec2 {
+        self.log.push(2);
+        self.inner.get_2d()
+    }
+}
+
 /// Light samples drawn in batches (`DirectLights::estimate`, their cache
-/// misses overlapped) are the samples drawn one at a time: the same
-/// numbers in the same order, so the same estimate to the bit, for counts
-/// within one batch and past it. Without MIS, whose weight depends on the
-/// count. Checked to fail by hand: with the batch drawing all `uc` before
-/// all `u`, every count above one differs.
+/// misses overlapped) are the samples drawn one at a time: each sample
+/// draws its number and then its pair, light after light (a rectangle,
+/// then the map), as before batches; and the same numbers in the same
+/// order give the same estimate to the bit, for counts within one batch
+/// and past it (without MIS, whose weight depends on the count). Checked
+/// to fail by hand: with the batch drawing all numbers before all pairs,
+/// or each pair before its number, the log differs and every count above
+/// one gives another estimate.
 #[test]
 fn batched_environment_samples_are_the_samples_one_at_a_time() {
-    let scene = sphere_on_floor();
+    let mut builder = SceneBuilder::new();
+    let floor = builder.material(diffuse(0.5));
+    builder.floor(floor, 2.0);
+    builder.light(rect_light(
+        4.0,
+        Vec3::new(0.0, 3.0, 0.0),
+        -Vec3::Y,
+        0.5,
+        0.5,
+    ));
+    let scene = builder.finish();
     let env = EnvironmentLight::new(lumpy_map(), EnvironmentSampling::Importance);
-    let accel = accel(&scene);
-    let world = World::new(&scene, &accel).with_environment(Some(env));
+    let lit = accel(&scene);
+    let world = World::new(&scene, &lit).with_environment(Some(env));
     let origin = Vec3::new(0.3, 2.0, 1.5);
     let ray = Ray::new(origin, (Vec3::new(0.6, 0.0, 0.4) - origin).normalize());
+    let hit = world
+        .intersector
+        .intersect(&ray)
+        .expect("the ray meets the floor");
+    let point = world.shade_surface(hit, -ray.dir);
+
+    let with_mis = DirectLights {
+        samples_per_light: 3,
+        environment_samples: Some(11),
+        mis: true,
+    };
+    let mut logged = Logged {
+        inner: IndependentSampler::from_stream(5, 0),
+        log: Vec::new(),
+    };
+    with_mis.estimate(&world, &point, &mut logged);
+    let expected: Vec<u8> = [3, 11].iter().flat_map(|&n| [1, 2].repeat(n)).collect();
+    assert_eq!(world.lights.lit().count(), 2);
+    assert_eq!(logged.log, expected, "draws: 1 a number, 2 a pair");
+
+    // The estimates, under the map alone.
+    let scene = sphere_on_floor();
+    let unlit = accel(&scene);
+    let env = EnvironmentLight::new(lumpy_map(), EnvironmentSampling::Importance);
+    let world = World::new(&scene, &unlit).with_environment(Some(env));
     let hit = world
         .intersector
         .intersect(&ray)

@@ -19,9 +19,11 @@ pub struct Suspect {
 /// What a check found.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Outcome {
-    /// Both tests passed: `statistic <= threshold` ([`super::stats::statistic`]
-    /// and its chi-square quantile) and `region <= region_threshold` (the
-    /// region test, [`super::scan`]: its largest window).
+    /// Both tests of the image passed: `statistic <= threshold`
+    /// ([`super::stats::statistic`] and its chi-square quantile) and
+    /// `region <= region_threshold` (the region test, [`super::scan`]: the
+    /// largest window sum `max |S_w|` over the image's windows). A check
+    /// with `-a` holds its rate image's sum in [`RateImages`].
     Pass {
         statistic: f64,
         threshold: f64,

@@ -11,7 +11,8 @@ use std::io::{self, Cursor};
 use std::path::{Path, PathBuf};
 
 use super::battery::SIZE;
-use super::stats::block_index;
+use super::scan::WINDOW;
+use super::stats::{block_index, BLOCK};
 use super::verdict::{CheckImages, CheckResult, Outcome};
 use crate::math::ratio_colour;
 
@@ -108,7 +109,7 @@ fn section(i: usize, r: &CheckResult) -> String {
             let _ = write!(
                 html,
                 "<p>Within the noise of a correct solution. {}</p>",
-                tests(*statistic, *threshold, *region, *region_threshold)
+                test_values(*statistic, *threshold, *region, *region_threshold)
             );
         }
         Outcome::Fail {
@@ -123,7 +124,7 @@ fn section(i: usize, r: &CheckResult) -> String {
                 html,
                 "<p>{}. {}</p>",
                 escape(what),
-                tests(*statistic, *threshold, *region, *region_threshold)
+                test_values(*statistic, *threshold, *region, *region_threshold)
             );
         }
         Outcome::Skipped(why) | Outcome::Error(why) => {
@@ -161,11 +162,13 @@ fn section(i: usize, r: &CheckResult) -> String {
     html + "</section>\n"
 }
 
-/// Both tests' values, each against its threshold: the sum over every
-/// cell and the region test's largest window ([`crate::check::scan`]).
-fn tests(statistic: f64, threshold: f64, region: f64, region_threshold: f64) -> String {
+/// The image's two tests, each value against its threshold: the sum over
+/// every cell ([`crate::check::stats::statistic`]) and the region test's
+/// most different window ([`crate::check::scan`]).
+fn test_values(statistic: f64, threshold: f64, region: f64, region_threshold: f64) -> String {
+    let side = WINDOW * BLOCK;
     format!(
-        "The image's statistic {statistic:.1}, threshold {threshold:.1}; the region test's {region:.1}, threshold {region_threshold:.1}."
+        "The image as a whole: {statistic:.1} (threshold {threshold:.1}); its most different {side} x {side} region: {region:.1} (threshold {region_threshold:.1})."
     )
 }
 

@@ -13,8 +13,8 @@ use crate::sampling::Sampler;
 use crate::world::{ShadingPoint, World};
 
 /// Light samples drawn at once, so that the cache misses of one light's
-/// samples overlap ([`Light::prefetch_sample`]: an environment map's rows
-/// are megabytes of tables read at random).
+/// samples overlap ([`Light::prefetch_sample_guide`]: an environment map's
+/// tables are megabytes read at random).
 const BATCH: usize = 8;
 
 /// Direct lighting by uniform hemisphere sampling (`-H`).
@@ -134,15 +134,18 @@ impl DirectLights {
                         // is the same; their misses overlap.
                         let count = left.min(BATCH);
                         let mut numbers = [(0.0, Vec2::ZERO); BATCH];
+                        // One sample has no misses to overlap (and its
+                        // sampling prefetches its own texels).
+                        let prefetch = count > 1;
                         for n in &mut numbers[..count] {
                             *n = (sampler.get_1d(), sampler.get_2d());
-                            if count > 1 {
-                                light.prefetch_sample(n.1);
+                            if prefetch {
+                                light.prefetch_sample_guide(n.1);
                             }
                         }
-                        if count > 1 {
+                        if prefetch {
                             for &(_, u) in &numbers[..count] {
-                                light.prefetch_cell(u);
+                                light.prefetch_sample_cdf(u);
                             }
                         }
                         for &(uc, u) in &numbers[..count] {

@@ -184,24 +184,23 @@ impl EnvironmentLight {
         })
     }
 
-    /// Starts loading what [`Self::sample_li`] at `u` will read first (see
-    /// [`crate::math::distribution::Distribution2D::prefetch`]); nothing
-    /// else.
+    /// Starts loading what [`Self::sample_li`] at `u` will read first, its
+    /// guide entry ([`Distribution2D::prefetch_guide`]); nothing else.
     #[inline]
-    pub fn prefetch_sample(&self, u: Vec2) {
+    pub fn prefetch_sample_guide(&self, u: Vec2) {
         if self.sampling == EnvironmentSampling::Importance {
-            self.tables.distribution.prefetch(u);
+            self.tables.distribution.prefetch_guide(u);
         }
     }
 
-    /// The second step after [`Self::prefetch_sample`]: the row's cdf and
-    /// the texels where the sample will land.
+    /// The second step after [`Self::prefetch_sample_guide`]: the row's
+    /// cdf where the search starts and the texels around that column.
     #[inline]
-    pub fn prefetch_cell(&self, u: Vec2) {
+    pub fn prefetch_sample_cdf(&self, u: Vec2) {
         if self.sampling == EnvironmentSampling::Importance {
             let map = &self.tables.map;
             (self.tables.distribution)
-                .prefetch_cell(u, |row, column| map.prefetch_around(column, row));
+                .prefetch_cdf(u, |row, column| map.prefetch_around(column, row));
         }
     }
 

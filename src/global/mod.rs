@@ -192,9 +192,12 @@ impl PathTracer {
             };
             ray = point.hit.spawn_ray(point.frame.to_world(sample.wi));
             // What the ray reads of the environment if it escapes loads
-            // while it is traced (a miss overlapped, not waited for).
-            for (_, light) in world.lights.infinite() {
-                light.prefetch_escape(ray.dir);
+            // while it is traced (a miss overlapped, not waited for), where
+            // the light it finds counts.
+            if self.counts(bounces) {
+                for (_, light) in world.lights.infinite() {
+                    light.prefetch_escape(ray.dir);
+                }
             }
         }
     }

@@ -150,11 +150,20 @@ impl Light {
 
     /// Starts loading the memory [`Self::sample_li`] at `u` will read first,
     /// where that is a cache miss worth overlapping (an environment map's
-    /// tables); changes nothing.
+    /// guide table); changes nothing.
     #[inline]
-    pub fn prefetch_sample(&self, u: Vec2) {
+    pub fn prefetch_sample_guide(&self, u: Vec2) {
         if let Light::Environment(l) = self {
-            l.prefetch_sample(u);
+            l.prefetch_sample_guide(u);
+        }
+    }
+
+    /// The second step after [`Self::prefetch_sample_guide`], once its
+    /// loads have had time to arrive (an environment map's cdf and texels).
+    #[inline]
+    pub fn prefetch_sample_cdf(&self, u: Vec2) {
+        if let Light::Environment(l) = self {
+            l.prefetch_sample_cdf(u);
         }
     }
 
@@ -164,15 +173,6 @@ impl Light {
     pub fn prefetch_escape(&self, w: Vec3) {
         if let Light::Environment(l) = self {
             l.prefetch_escape(w);
-        }
-    }
-
-    /// The second step after [`Self::prefetch_sample`], once its loads
-    /// have had time to arrive.
-    #[inline]
-    pub fn prefetch_cell(&self, u: Vec2) {
-        if let Light::Environment(l) = self {
-            l.prefetch_cell(u);
         }
     }
 

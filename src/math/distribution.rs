@@ -291,11 +291,9 @@ impl Distribution2D {
         hint: impl FnOnce(usize, usize),
     ) -> DistributionSample<Vec2> {
         let row = self.marginal.sample(u.y);
+        let entry = self.guide_entry(row.cell, u.x);
+        hint(row.cell, self.guide[entry] as usize);
         let guide = &self.guide[row.cell * self.width..(row.cell + 1) * self.width];
-        hint(
-            row.cell,
-            guide[cell_of(u.x.clamp(0.0, 1.0), self.width)] as usize,
-        );
         let column = sample_tables(self.row_cdf(row.cell), guide, u.x);
         DistributionSample {
             x: Vec2::new(column.x, row.x),
@@ -304,29 +302,35 @@ impl Distribution2D {
         }
     }
 
+    /// The index in [`Self::guide`] of the entry where the search for
+    /// `u_x` in `row` starts: what every sample and prefetch reads first.
+    #[inline(always)]
+    fn guide_entry(&self, row: usize, u_x: f32) -> usize {
+        row * self.width + cell_of(u_x.clamp(0.0, 1.0), self.width)
+    }
+
     /// Starts loading the guide entry that [`Self::sample`] at `u` reads
     /// first, so that a caller with several samples to draw can overlap
     /// their cache misses (the marginal's tables are small and stay
-    /// cached; the rows' guides and cdfs are megabytes read at random).
-    /// Changes nothing else.
+    /// cached; the rows' guides and cdfs, megabytes in all, are read at
+    /// random). Changes nothing else.
     #[inline]
-    pub fn prefetch(&self, u: Vec2) {
-        let row = self.marginal.sample(u.y).cell;
-        let column = cell_of(u.x.clamp(0.0, 1.0), self.width);
-        crate::math::prefetch::prefetch_lines(&self.guide[row * self.width + column], 1);
+    pub fn prefetch_guide(&self, u: Vec2) {
+        let entry = self.guide_entry(self.marginal.sample(u.y).cell, u.x);
+        crate::math::prefetch::prefetch_lines(&self.guide[entry], 1);
     }
 
-    /// The second step after [`Self::prefetch`]: reads the guide entry
-    /// (loaded by then) and starts loading the cdf where the search will
-    /// start, and, through `hint(row, column)`, whatever the caller reads
-    /// at the cell. Changes nothing else.
+    /// The second step after [`Self::prefetch_guide`]: reads the guide
+    /// entry (loaded by then) and starts loading the cdf where the search
+    /// will start, and, through `hint(row, column)` as in
+    /// [`Self::sample_hinted`], whatever the caller reads at the cell.
+    /// Changes nothing else.
     #[inline]
-    pub fn prefetch_cell(&self, u: Vec2, hint: impl FnOnce(usize, usize)) {
+    pub fn prefetch_cdf(&self, u: Vec2, hint: impl FnOnce(usize, usize)) {
         let row = self.marginal.sample(u.y).cell;
-        let column = self.guide[row * self.width + cell_of(u.x.clamp(0.0, 1.0), self.width)];
-        let cdf = self.row_cdf(row);
-        crate::math::prefetch::prefetch_lines(&cdf[column as usize], 1);
-        hint(row, column as usize);
+        let column = self.guide[self.guide_entry(row, u.x)] as usize;
+        crate::math::prefetch::prefetch_lines(&self.row_cdf(row)[column], 1);
+        hint(row, column);
     }
 
     /// Density at `p` in `[0, 1]^2`, per unit area.

@@ -169,20 +169,21 @@ pub fn report_is_whole(results: &[CheckResult], dir: &Path) {
         let text: String = section.descendants().filter_map(|n| n.text()).collect();
         if let Outcome::Pass {
             statistic,
+            threshold,
             region,
             region_threshold,
-            ..
         }
         | Outcome::Fail {
             statistic,
+            threshold,
             region,
             region_threshold,
             ..
         } = r.outcome
         {
             for shown in [
-                format!("statistic {statistic:.1}"),
-                format!("the region test's {region:.1}, threshold {region_threshold:.1}"),
+                format!("as a whole: {statistic:.1} (threshold {threshold:.1})"),
+                format!("region: {region:.1} (threshold {region_threshold:.1})"),
             ] {
                 assert!(
                     text.contains(&shown),
