@@ -15,7 +15,7 @@ mod bench;
 
 use std::time::Duration;
 
-use bench::{all_pass, report_is_whole, script, stand_in_of, Bench};
+use bench::{all_pass, others_that_fit, report_is_whole, script, stand_in_of, Bench};
 use pathtracer::check::battery::battery_of;
 use pathtracer::check::{battery, judge, CheckScene, Outcome};
 use pathtracer::course::Assignment;
@@ -45,8 +45,8 @@ fn a_correct_3_2_renderer_passes_parts_6_to_8() {
 }
 
 /// Each of `mistakes`, injected into a 3-2 stand-in, fails the check of
-/// `part` and is named first, fitting (measured: every one first, its
-/// misfit 0.4 a cell or less, the next one's 2.1 or more).
+/// `part` and is named first, fitting, and no other fits (measured: every
+/// one first, its misfit 0.4 a cell or less, the next one's 2.1 or more).
 fn each_fails_and_is_named_first(part: u8, mistakes: &[Mistake]) {
     let bench = Bench::new();
     let check = battery(&[part])
@@ -69,6 +69,10 @@ fn each_fails_and_is_named_first(part: u8, mistakes: &[Mistake]) {
                     "{mistake}: {statistic:.0} of {threshold:.0}, region {region:.1} of {region_threshold:.1}; {what}; {:?}",
                     &suspects[..2]
                 );
+                // Held out of the catalogue, it would be "none known
+                // fits", not another mistake (measured: none fits).
+                let others = others_that_fit(suspects, mistake);
+                assert!(others.is_empty(), "{mistake}: {others:?} fit too");
                 assert!(
                     suspects[0].mistake == mistake && suspects[0].fits,
                     "{mistake}: {suspects:?}"

@@ -12,7 +12,7 @@ mod bench;
 
 use std::time::Duration;
 
-use bench::{report_is_whole, script, stand_in, Bench, PATHTRACER};
+use bench::{others_that_fit, report_is_whole, script, stand_in, Bench, PATHTRACER};
 use pathtracer::adaptive::Adaptive;
 use pathtracer::check::battery::SIZE;
 use pathtracer::check::rates::RATE_ROUNDING;
@@ -48,7 +48,7 @@ fn rate_model(bench: &Bench, check: &Check) -> NullModel {
 }
 
 /// A correct stand-in passes; each of part 5's mistakes fails the check
-/// and is named first; the report shows both rate images of each.
+/// and is named first, and no other fits; the report shows both rate images of each.
 #[test]
 fn part_5_mistakes_fail_and_are_named_first() {
     let bench = Bench::new();
@@ -71,6 +71,9 @@ fn part_5_mistakes_fail_and_are_named_first() {
             panic!("{mistake} passed: {:?}", r.outcome);
         };
         eprintln!("{mistake}: {what}; {:?}", &suspects[..3]);
+        // Held out of the catalogue, it would be "none known fits".
+        let others = others_that_fit(suspects, mistake);
+        assert!(others.is_empty(), "{mistake}: {others:?} fit too");
         assert_eq!(suspects[0].mistake, mistake, "{suspects:?}");
         assert!(suspects[0].fits, "{suspects:?}");
         all.push(r);

@@ -253,3 +253,14 @@ pub fn decode_base64(text: &str) -> Vec<u8> {
     }
     bytes
 }
+
+/// The mistakes other than `culprit` that fit a failed image: what the
+/// checker would name if `culprit` were not in its catalogue (a bug held
+/// out from it).
+pub fn others_that_fit(suspects: &[pathtracer::check::Suspect], culprit: Mistake) -> Vec<Mistake> {
+    suspects
+        .iter()
+        .filter(|s| s.fits && s.mistake != culprit)
+        .map(|s| s.mistake)
+        .collect()
+}
