@@ -226,7 +226,8 @@ fn measure_the_regional_power_of_each_check() {
 /// image cannot be told apart at these settings; where its image has a
 /// pattern of single pixels, the failure names it. No other mistake
 /// fits: held out of the catalogue, as a bug the checker does not know,
-/// it would be "none known fits", not a wrong name.
+/// it would be "none known fits", not a wrong name (checked by hand: with
+/// every suspect made to fit, this fails).
 #[test]
 fn a_mistake_fails_its_part_and_is_named() {
     let bench = Bench::new();

@@ -18,16 +18,18 @@
 mod common;
 
 use std::f64::consts::PI;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 use common::{
     accel, assert_mean_matches, assert_means_agree, diffuse, emission, estimate, ray_towards,
-    tracer, tracer_with, SceneBuilder, ALPHA, HEMISPHERE, LIGHTS,
+    rect_light, tracer, tracer_with, SceneBuilder, ALPHA, HEMISPHERE, LIGHTS, LIGHTS_ALONE,
 };
 use glam::{DVec3, Vec3};
 use pathtracer::global::{PathTracer, Roulette, THROUGHPUT_ROULETTE_AFTER};
-use pathtracer::intersect::Ray;
+use pathtracer::intersect::{Intersector, PrimitiveHit, Primitives, Ray};
+use pathtracer::sampling::IndependentSampler;
 use pathtracer::scene::builtin::cornell_box;
-use pathtracer::scene::Light;
+use pathtracer::scene::{Light, Material};
 use pathtracer::world::World;
 
 /// The integrating sphere complements the textbook furnace of
@@ -249,6 +251,90 @@ fn russian_roulette_on_and_off_agree() {
                 on,
                 alpha,
             );
+        }
+    }
+}
+
+/// An intersector that counts the closest-hit searches and the shadow
+/// rays it is asked for.
+struct Counting<I> {
+    inner: I,
+    nearest: AtomicUsize,
+    occluded: AtomicUsize,
+}
+
+impl<I: Intersector> Intersector for Counting<I> {
+    fn primitives(&self) -> &Primitives {
+        self.inner.primitives()
+    }
+
+    fn nearest(&self, ray: &Ray) -> Option<PrimitiveHit> {
+        self.nearest.fetch_add(1, Ordering::Relaxed);
+        self.inner.nearest(ray)
+    }
+
+    fn occluded(&self, ray: &Ray) -> bool {
+        self.occluded.fetch_add(1, Ordering::Relaxed);
+        self.inner.occluded(ray)
+    }
+}
+
+/// The last vertex traces no continuation ray where what it would find
+/// cannot count or is counted otherwise: where it is diffuse and a light
+/// samples every emitter, it takes its direct light from light samples
+/// alone (docs/05-global.md); without MIS, what a BSDF ray finds on a
+/// sampled light never counts. At depth 1 each path to a diffuse floor
+/// under a rectangle light traces its camera ray and one shadow ray; to a
+/// rough conductor it traces the continuation ray too, whose emission is
+/// the BSDF side of MIS, unless MIS is off. What this saves is time alone
+/// (the image is the same in expectation), so no estimator test can see
+/// it. Checked by mutants: `lights_alone_at_last` made `false` (the floor
+/// traces 2,000 rays) or `true` (the conductor with MIS traces 1,000), and
+/// `last_ray_can_count` made `true` (the conductor without MIS traces
+/// about 2,000).
+#[test]
+fn the_last_vertex_traces_no_ray_that_cannot_count() {
+    let paths = 1000;
+    let copper = Material::Microfacet {
+        alpha: 0.3,
+        eta: Vec3::new(0.2, 0.9, 1.1),
+        k: Vec3::new(3.9, 2.4, 2.2),
+    };
+    let cases = [
+        (diffuse(0.5), LIGHTS, false),
+        (copper, LIGHTS, true),
+        (copper, LIGHTS_ALONE, false),
+    ];
+    for (material, direct, continues) in cases {
+        let mut b = SceneBuilder::new();
+        let floor = b.material(material);
+        b.floor(floor, 2.0).light(rect_light(
+            5.0,
+            Vec3::new(0.0, 1.0, 0.0),
+            -Vec3::Y,
+            0.5,
+            0.5,
+        ));
+        let scene = b.finish();
+        let counting = Counting {
+            inner: accel(&scene),
+            nearest: AtomicUsize::new(0),
+            occluded: AtomicUsize::new(0),
+        };
+        let world = World::new(&scene, &counting);
+        let ray = ray_towards(Vec3::new(0.0, 0.8, 1.0), Vec3::new(0.2, 0.0, 0.1));
+        let mut sampler = IndependentSampler::from_stream(5, 0);
+        for _ in 0..paths {
+            tracer(direct, 1, false).radiance(&world, &ray, &mut sampler);
+        }
+        let rays = counting.nearest.load(Ordering::Relaxed);
+        let shadow_rays = counting.occluded.load(Ordering::Relaxed);
+        assert_eq!(shadow_rays, paths, "one light sample a path");
+        if continues {
+            // A sample below the surface is dropped: most are traced.
+            assert!(rays > paths * 3 / 2, "{rays} rays for {paths} paths");
+        } else {
+            assert_eq!(rays, paths, "the camera rays alone: {direct:?}");
         }
     }
 }

@@ -43,7 +43,7 @@ pub mod emission;
 pub mod roulette;
 
 pub use emission::{emission_weight, Emitter, PrevVertex};
-pub use roulette::{Roulette, CONTINUE_PROBABILITY, THROUGHPUT_ROULETTE_AFTER};
+pub use roulette::{PathWeight, Roulette, CONTINUE_PROBABILITY, THROUGHPUT_ROULETTE_AFTER};
 
 use crate::direct::{DirectHemisphere, DirectLights};
 use crate::intersect::{Hit, Intersector, Ray};
@@ -112,9 +112,8 @@ impl PathTracer {
         sampler: &mut impl Sampler,
     ) -> Rgb {
         let mut l = Rgb::ZERO;
-        let mut beta = Rgb::ONE;
-        // Product of eta^2 over the refractions crossed (roulette's scale).
-        let mut eta_scale = 1.0;
+        // The throughput and the refractions' scale, roulette's inputs.
+        let mut path = PathWeight::START;
         let mut ray = *camera_ray;
         let mut prev = PrevVertex::CameraOrDelta;
         // Vertices so far: the light the next ray finds has this many bounces.
@@ -122,7 +121,7 @@ impl PathTracer {
         loop {
             let next = world.intersector.intersect(&ray);
             if self.counts(bounces) {
-                l += beta * self.found_emission(world, &ray, next.as_ref(), &prev);
+                l += path.beta * self.found_emission(world, &ray, next.as_ref(), &prev);
             }
             let Some(hit) = next else {
                 return l;
@@ -144,7 +143,7 @@ impl PathTracer {
             }
             let estimates_direct = !matches!(self.direct, DirectStrategy::BsdfOnly);
             if estimates_direct && self.counts(bounces) && !point.bsdf.is_delta() {
-                l += beta
+                l += path.beta
                     * if lights_alone {
                         self.one_bounce_lights_alone(world, &point, sampler)
                     } else {
@@ -159,14 +158,11 @@ impl PathTracer {
             let Some(sample) = world.sample_continuation(&point, uc, u) else {
                 return l;
             };
-            let weight = sample.weight();
-            if sample.transmission {
-                eta_scale *= sample.eta * sample.eta;
-            }
+            let onward = path.scattered(sample.weight(), sample.transmission.then_some(sample.eta));
             // Russian roulette, where its rule applies, never on the last
             // ray, which only looks for emission.
             let q = if self.roulette.applies_at(bounces) && !last {
-                let q = self.roulette.continue_probability(beta * weight, eta_scale);
+                let q = onward.continue_probability(self.roulette);
                 if sampler.get_1d() >= q {
                     return l;
                 }
@@ -174,12 +170,12 @@ impl PathTracer {
             } else {
                 1.0
             };
-            beta *= weight / q;
-            if !beta.is_finite() {
+            path = onward.survived(q);
+            if !path.beta.is_finite() {
                 // Counted by the render as a rejected sample, not hidden.
                 return Rgb::splat(f32::NAN);
             }
-            if beta == Rgb::ZERO {
+            if path.beta == Rgb::ZERO {
                 return l;
             }
             prev = if sample.is_delta() {

@@ -91,9 +91,74 @@ impl Roulette {
     }
 }
 
+/// What a path carries from vertex to vertex, as roulette reads it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PathWeight {
+    /// The throughput `beta`: the product of `f |cos| / (pdf q)` so far.
+    pub beta: Rgb,
+    /// `eta_scale = prod eta_k^2` over the refractions crossed, `eta_k`
+    /// the relative index of each (into glass of index 1.5 from air, 1.5;
+    /// out of it, 1 / 1.5).
+    pub eta_scale: f32,
+}
+
+impl PathWeight {
+    /// A camera path before its first vertex.
+    pub const START: PathWeight = PathWeight {
+        beta: Rgb::ONE,
+        eta_scale: 1.0,
+    };
+
+    /// The path past a vertex whose sample has weight `f |cos| / pdf` and
+    /// refracts with relative index `eta` where `refraction` is given,
+    /// before roulette: `beta weight`, and `eta_scale eta^2` on refraction.
+    pub fn scattered(self, weight: Rgb, refraction: Option<f32>) -> PathWeight {
+        PathWeight {
+            beta: self.beta * weight,
+            eta_scale: refraction.map_or(self.eta_scale, |eta| self.eta_scale * eta * eta),
+        }
+    }
+
+    /// The probability of going on under `rule` for this path.
+    pub fn continue_probability(self, rule: Roulette) -> f32 {
+        rule.continue_probability(self.beta, self.eta_scale)
+    }
+
+    /// The path that went on with probability `q`: `beta / q`.
+    pub fn survived(self, q: f32) -> PathWeight {
+        PathWeight {
+            beta: self.beta / q,
+            ..self
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `eta_scale` gathers `eta^2` over refractions only, so that a path
+    /// through a pane of glass and out again is back to 1, and inside it
+    /// the radiance scale `1 / eta^2` does not get the path cut: its
+    /// probability of going on is its throughput's before the refraction.
+    #[test]
+    fn a_path_in_glass_is_not_cut_for_the_radiance_scale() {
+        let weight = Rgb::new(0.9, 0.6, 0.3);
+        let into = PathWeight::START.scattered(weight / 2.25, Some(1.5));
+        assert_eq!(into.beta, weight / 2.25);
+        assert!((into.eta_scale - 2.25).abs() < 1e-6);
+        let p = into.continue_probability(Roulette::Throughput);
+        assert!((p - 0.9).abs() < 1e-6, "{p}");
+        let out = into.scattered(Rgb::splat(2.25), Some(1.0 / 1.5));
+        assert!((out.eta_scale - 1.0).abs() < 1e-6);
+        // A reflection keeps the scale; the survivors are divided by q.
+        let reflected = into.scattered(Rgb::splat(0.5), None);
+        assert_eq!(reflected.eta_scale, into.eta_scale);
+        assert_eq!(reflected.beta, into.beta * 0.5);
+        let survived = reflected.survived(0.25);
+        assert_eq!(survived.beta, reflected.beta / 0.25);
+        assert_eq!(survived.eta_scale, reflected.eta_scale);
+    }
 
     #[test]
     fn the_throughput_rule_starts_later_than_the_course_s() {
