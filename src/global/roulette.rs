@@ -54,11 +54,6 @@ pub enum Roulette {
 }
 
 impl Roulette {
-    /// Whether paths are ended at random at all.
-    pub fn is_on(self) -> bool {
-        self != Roulette::Off
-    }
-
     /// Whether the rule may end a path at its vertex number `bounces`
     /// (1 for the camera ray's hit): the fixed rule from the second vertex
     /// on, the throughput rule after [`THROUGHPUT_ROULETTE_AFTER`].
@@ -78,15 +73,6 @@ impl Roulette {
             Roulette::Off => 1.0,
             Roulette::Fixed => CONTINUE_PROBABILITY,
             Roulette::Throughput => (beta * eta_scale).max_element().min(1.0),
-        }
-    }
-
-    /// Its name on the command line.
-    pub fn name(self) -> &'static str {
-        match self {
-            Roulette::Off => "off",
-            Roulette::Fixed => "fixed",
-            Roulette::Throughput => "throughput",
         }
     }
 }
