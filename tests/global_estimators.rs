@@ -14,6 +14,9 @@
 //!
 //! Every test was checked once by hand to fail for a deliberately wrong
 //! library (the variant is named in each test's comment; none is committed).
+//!
+//! One test counts rays instead: the last vertex's rules save time alone,
+//! and only the number of rays traced shows them.
 
 mod common;
 
@@ -256,7 +259,8 @@ fn russian_roulette_on_and_off_agree() {
 }
 
 /// An intersector that counts the closest-hit searches and the shadow
-/// rays it is asked for.
+/// rays it is asked for (atomics: an intersector is shared between
+/// threads, `Sync`).
 struct Counting<I> {
     inner: I,
     nearest: AtomicUsize,
