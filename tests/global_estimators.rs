@@ -31,7 +31,7 @@ use glam::{DVec3, Vec3};
 use pathtracer::global::{PathTracer, Roulette, THROUGHPUT_ROULETTE_AFTER};
 use pathtracer::intersect::{Intersector, PrimitiveHit, Primitives, Ray};
 use pathtracer::sampling::IndependentSampler;
-use pathtracer::scene::builtin::cornell_box;
+use pathtracer::scene::builtin::{cornell_box, COPPER_ETA, COPPER_K};
 use pathtracer::scene::{Light, Material};
 use pathtracer::world::World;
 
@@ -301,8 +301,8 @@ fn the_last_vertex_traces_no_ray_that_cannot_count() {
     let paths = 1000;
     let copper = Material::Microfacet {
         alpha: 0.3,
-        eta: Vec3::new(0.2, 0.9, 1.1),
-        k: Vec3::new(3.9, 2.4, 2.2),
+        eta: COPPER_ETA,
+        k: COPPER_K,
     };
     let cases = [
         (diffuse(0.5), LIGHTS, false),
