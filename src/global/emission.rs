@@ -166,7 +166,9 @@ pub fn found_emission<I: Intersector>(
         let Some(t) = rect.hit_distance(ray).filter(|_| wanted) else {
             continue;
         };
-        // A stand-in lies on its rectangle's plane or just behind it.
+        // A stand-in lies on its rectangle's plane, behind it, or up to
+        // 1e-4 of the diagonal in front (`lights::stand_ins`): seen from
+        // near the light, more than the relative tolerance below allows.
         let slack = if role
             == (EmitterRole::Shown {
                 light: Some(i as u32),
