@@ -35,15 +35,7 @@ fn light() -> Light {
 fn scene_with(surface: Option<(Material, f32, bool)>) -> Scene {
     let mut b = SceneBuilder::new();
     let floor = b.material(diffuse(0.5));
-    b.quad(
-        floor,
-        [
-            Vec3::new(-2.0, 0.0, -2.0),
-            Vec3::new(2.0, 0.0, -2.0),
-            Vec3::new(2.0, 0.0, 2.0),
-            Vec3::new(-2.0, 0.0, 2.0),
-        ],
-    );
+    b.floor(floor, 2.0);
     if let Some((material, y, on_light)) = surface {
         let m = b.material(material);
         let corners = if on_light {
