@@ -30,7 +30,7 @@ use pathtracer::environment::{
 };
 use pathtracer::global::{DirectStrategy, PathTracer};
 use pathtracer::intersect::{Intersector, Ray};
-use pathtracer::lights::LightPdf;
+use pathtracer::lights::{LightChoiceRule, LightPdf};
 use pathtracer::math::rng::{next_2d, sampler};
 use pathtracer::math::warp::sample_uniform_sphere;
 use pathtracer::math::{luminance, Rgb};
@@ -271,6 +271,12 @@ fn four_environment_samples_a_vertex_change_the_noise_not_the_image() {
     let (plain, line) = with_environment_samples(&one, &World::new(&scene, &accel).lights);
     assert!(line.contains("no environment map"), "{line}");
     assert!(matches!(plain.direct, DirectStrategy::Lights(d) if d.environment_samples.is_none()));
+    // The count a vertex is for lights that are all sampled; lights chosen
+    // by power take -l samples in all, the map's among them.
+    let (map, _) = world.lights.infinite().next().expect("the map");
+    assert_eq!(d.strategy(&world.lights, map).samples, ENVIRONMENT_SAMPLES);
+    let by_power = world.lights.clone().with_choice(LightChoiceRule::ByPower);
+    assert_eq!(d.strategy(&by_power, map).samples, d.samples_per_light);
 
     let n = 100_000;
     let by_one = estimate(&scene, &env, &one, n, 501);
