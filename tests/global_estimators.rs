@@ -295,7 +295,9 @@ impl<I: Intersector> Intersector for Counting<I> {
 /// it. Checked by mutants: `lights_alone_at_last` made `false` (the floor
 /// traces 2,000 rays) or `true` (the conductor with MIS traces 1,000), and
 /// `last_ray_can_count` made `true` (the conductor without MIS traces
-/// about 2,000).
+/// about 2,000). The same holds for shadow rays: a light sample whose BSDF
+/// value is 0 traces none (`DirectLights::contribution`'s early return,
+/// whose `||` made `&&` traces 1,000 under a floor lit from below).
 #[test]
 fn the_last_vertex_traces_no_ray_that_cannot_count() {
     let paths = 1000;
@@ -304,21 +306,25 @@ fn the_last_vertex_traces_no_ray_that_cannot_count() {
         eta: COPPER_ETA,
         k: COPPER_K,
     };
+    // The material, the strategy, whether the last ray is traced, and
+    // whether the light hangs above the floor (or lies under it, facing
+    // up, where no light sample can light the floor).
     let cases = [
-        (diffuse(0.5), LIGHTS, false),
-        (copper, LIGHTS, true),
-        (copper, LIGHTS_ALONE, false),
+        (diffuse(0.5), LIGHTS, false, true),
+        (copper, LIGHTS, true, true),
+        (copper, LIGHTS_ALONE, false, true),
+        (diffuse(0.5), LIGHTS, false, false),
     ];
-    for (material, direct, continues) in cases {
+    for (material, direct, continues, above) in cases {
         let mut b = SceneBuilder::new();
         let floor = b.material(material);
-        b.floor(floor, 2.0).light(rect_light(
-            5.0,
-            Vec3::new(0.0, 1.0, 0.0),
-            -Vec3::Y,
-            0.5,
-            0.5,
-        ));
+        let (y, facing) = if above {
+            (1.0, -Vec3::Y)
+        } else {
+            (-1.0, Vec3::Y)
+        };
+        b.floor(floor, 2.0)
+            .light(rect_light(5.0, Vec3::new(0.0, y, 0.0), facing, 0.5, 0.5));
         let scene = b.finish();
         let counting = Counting {
             inner: accel(&scene),
@@ -333,7 +339,10 @@ fn the_last_vertex_traces_no_ray_that_cannot_count() {
         }
         let rays = counting.nearest.load(Ordering::Relaxed);
         let shadow_rays = counting.occluded.load(Ordering::Relaxed);
-        assert_eq!(shadow_rays, paths, "one light sample a path");
+        // One light sample a path, and no shadow ray for a sample that
+        // cannot light the floor (its BSDF value is 0).
+        let expected = if above { paths } else { 0 };
+        assert_eq!(shadow_rays, expected, "shadow rays, light above: {above}");
         if continues {
             // A sample below the surface is dropped: most are traced.
             assert!(rays > paths * 3 / 2, "{rays} rays for {paths} paths");
