@@ -48,7 +48,8 @@ fn rate_model(bench: &Bench, check: &Check) -> NullModel {
 }
 
 /// A correct stand-in passes; each of part 5's mistakes fails the check
-/// and is named first, and no other fits; the report shows both rate images of each.
+/// and is named first, and no other fits; the report shows both rate
+/// images of each.
 #[test]
 fn part_5_mistakes_fail_and_are_named_first() {
     let bench = Bench::new();

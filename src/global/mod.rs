@@ -162,7 +162,9 @@ impl PathTracer {
             // Russian roulette, where its rule applies, never on the last
             // ray, which only looks for emission.
             let q = if self.roulette.applies_at(bounces) && !last {
-                let q = onward.continue_probability(self.roulette);
+                let q = self
+                    .roulette
+                    .continue_probability(onward.beta, onward.eta_scale);
                 if sampler.get_1d() >= q {
                     return l;
                 }

@@ -107,11 +107,6 @@ impl PathWeight {
         }
     }
 
-    /// The probability of going on under `rule` for this path.
-    pub fn continue_probability(self, rule: Roulette) -> f32 {
-        rule.continue_probability(self.beta, self.eta_scale)
-    }
-
     /// The path that went on with probability `q`: `beta / q`.
     pub fn survived(self, q: f32) -> PathWeight {
         PathWeight {
@@ -138,7 +133,7 @@ mod tests {
         let into = PathWeight::START.scattered(weight / 2.25, Some(1.5));
         assert_eq!(into.beta, weight / 2.25);
         assert!((into.eta_scale - 2.25).abs() < 1e-6);
-        let p = into.continue_probability(Roulette::Throughput);
+        let p = Roulette::Throughput.continue_probability(into.beta, into.eta_scale);
         assert!((p - 0.9).abs() < 1e-6, "{p}");
         let out = into.scattered(Rgb::splat(2.25), Some(1.0 / 1.5));
         assert!((out.eta_scale - 1.0).abs() < 1e-6);
