@@ -78,6 +78,11 @@ fn found(scene: &Scene, convention: LightConvention, origin: Vec3, camera: bool)
     tracer(LIGHTS, 2, false).found_emission(&world, &ray, next.as_ref(), &prev)
 }
 
+/// [`found`] after a scattering vertex at `origin`, the physical convention.
+fn bsdf_ray_finds(scene: &Scene, origin: Vec3) -> Rgb {
+    found(scene, LightConvention::Physical, origin, false)
+}
+
 /// A surface on the light's plane does not hide the light from a BSDF
 /// ray (the ceiling of the course's boxes holds its light flush), a
 /// stand-in quad on it neither, and a surface in front of it does.
@@ -94,12 +99,7 @@ fn found(scene: &Scene, convention: LightConvention, origin: Vec3, camera: bool)
 /// nothing a valid stand-in can show.
 #[test]
 fn surfaces_on_the_light_s_plane_do_not_hide_it_and_those_in_front_do() {
-    let open = found(
-        &scene_with(None),
-        LightConvention::Physical,
-        FLOOR_POINT,
-        false,
-    );
+    let open = bsdf_ray_finds(&scene_with(None), FLOOR_POINT);
     assert!(open.x > 0.0 && open.x < RADIANCE, "{open}");
     let grey = diffuse(0.5);
     let stand_in = Material::Emission {
@@ -109,12 +109,7 @@ fn surfaces_on_the_light_s_plane_do_not_hide_it_and_those_in_front_do() {
         ("a ceiling on the light's plane", (grey, 1.0, false)),
         ("the light's stand-in", (stand_in, 1.0, true)),
     ] {
-        let seen = found(
-            &scene_with(Some(surface)),
-            LightConvention::Physical,
-            FLOOR_POINT,
-            false,
-        );
+        let seen = bsdf_ray_finds(&scene_with(Some(surface)), FLOOR_POINT);
         assert!(
             (seen - open).abs().max_element() <= 1e-6 * open.x,
             "{what}: {seen} against {open}"
@@ -125,24 +120,14 @@ fn surfaces_on_the_light_s_plane_do_not_hide_it_and_those_in_front_do() {
     // farther from the light than the plane's relative tolerance reaches
     // (5e-5): the stand-in's slack keeps the light seen.
     let near = Vec3::new(0.1, 0.95, 0.05);
-    let open_near = found(&scene_with(None), LightConvention::Physical, near, false);
+    let open_near = bsdf_ray_finds(&scene_with(None), near);
     let in_front = (stand_in, 1.0 - 1e-4, true);
-    let seen = found(
-        &scene_with(Some(in_front)),
-        LightConvention::Physical,
-        near,
-        false,
-    );
+    let seen = bsdf_ray_finds(&scene_with(Some(in_front)), near);
     assert!(
         (seen - open_near).abs().max_element() <= 1e-5 * open_near.x,
         "a stand-in just in front: {seen} against {open_near}"
     );
-    let lower = found(
-        &scene_with(Some((grey, 0.5, false))),
-        LightConvention::Physical,
-        FLOOR_POINT,
-        false,
-    );
+    let lower = bsdf_ray_finds(&scene_with(Some((grey, 0.5, false))), FLOOR_POINT);
     assert_eq!(lower, Rgb::ZERO, "a ceiling in front of the light hides it");
 }
 
