@@ -38,10 +38,13 @@
 //! (p = 0).
 
 //!
-//! The table of families is in `samplers/families.rs`, the grid and its
+//! The table of families is in `samplers/families.rs` (the distributions'
+//! and environment maps' in `samplers/environment_families.rs`), the grid and its
 //! quadrature in `samplers/quadrature.rs`.
 
 mod common;
+#[path = "samplers/environment_families.rs"]
+mod environment_families;
 #[path = "samplers/families.rs"]
 mod families;
 #[path = "samplers/quadrature.rs"]
