@@ -2,7 +2,9 @@
 //! the path tracer with and without them agrees (two-sample z-tests) on
 //! floors lit through mirror, glass and conductor spheres, with the
 //! cones' share in both multiple importance sampling weights, and it is
-//! less noisy where the spheres throw caustics.
+//! less noisy where the spheres throw caustics. One more test, without
+//! statistics, holds where the continuation's branches meet and where a
+//! cone's direction ends the path.
 //!
 //! Each test traces one fixed ray many times with a fixed seed, at
 //! [`ALPHA`] = 1e-4 per test divided among its comparisons (Bonferroni;
@@ -179,4 +181,71 @@ fn casters_off_and_on(
             (off, on)
         })
         .collect()
+}
+
+/// Where the continuation's branches meet and where a cone's direction
+/// ends the path, at a floor point beside a mirror sphere sunk halfway
+/// into the floor, so that part of its cone lies below the surface:
+/// `u.x` in `[0, c)` draws from a cone, `[c, 1)` from the BSDF with `u.x`
+/// stretched back to `[0, 1)`, so `u.x = c` is the BSDF's sample at
+/// `u.x = 0`, and no branch is handed a number outside `[0, 1)`; a cone
+/// direction below the surface carries nothing, and gives no sample
+/// rather than a path that goes on with a weight of zero (a ray traced
+/// for nothing). Checked with mutants: `u.x <= c` for the cone branch
+/// fails the first assertion (the cones get `u.x / c = 1`), and refusing
+/// only NaN directions (`wi.z <= 0 && wi.z.is_nan()`) the second.
+#[test]
+fn a_cone_below_the_surface_ends_the_path_and_the_bsdf_owns_the_branch_boundary() {
+    use glam::Vec2;
+    use pathtracer::intersect::Ray;
+    use pathtracer::world::casters::CASTER_PROBABILITY;
+    let mut b = SceneBuilder::new();
+    let floor = b.material(diffuse(0.7));
+    let mirror = b.material(Material::Mirror {
+        reflectance: Vec3::ONE,
+    });
+    b.floor(floor, 3.0)
+        .sphere(Vec3::new(0.6, 0.0, 0.0), 0.4, mirror)
+        .light(rect_light(
+            5.0,
+            Vec3::new(0.0, 2.5, 0.0),
+            -Vec3::Y,
+            0.8,
+            0.6,
+        ));
+    let scene = b.finish();
+    let bvh = accel(&scene);
+    let world = World::new(&scene, &bvh);
+    let down = Ray::new(Vec3::new(0.0, 0.5, 0.0), -Vec3::Y);
+    let point = world.trace(&down).expect("the ray meets the floor");
+    assert!(!point.cones.is_empty(), "the sunk sphere is a caster here");
+    let c = CASTER_PROBABILITY;
+    for v in [0.0, 0.37, 0.9] {
+        let boundary = world.sample_continuation(&point, 0.5, Vec2::new(c, v));
+        let bsdf = point.bsdf.sample(point.wo, 0.5, Vec2::new(0.0, v));
+        assert_eq!(
+            boundary.map(|s| s.wi),
+            bsdf.map(|s| s.wi),
+            "u = ({c}, {v}): the BSDF's sample at u.x = 0"
+        );
+    }
+    let (mut kept, mut ended) = (0, 0);
+    for i in 0..64 * 64 {
+        let u = Vec2::new(
+            c * ((i % 64) as f32 + 0.5) / 64.0,
+            ((i / 64) as f32 + 0.5) / 64.0,
+        );
+        match world.sample_continuation(&point, 0.5, u) {
+            Some(s) => {
+                assert!(
+                    s.wi.z > 0.0,
+                    "u = {u}: a sample below the surface, {}",
+                    s.wi
+                );
+                kept += 1;
+            }
+            None => ended += 1,
+        }
+    }
+    assert!(kept > 0 && ended > 0, "{kept} kept, {ended} ended");
 }
