@@ -232,6 +232,13 @@ mod tests {
         assert_eq!(casters.cones(Vec3::new(0.0, -2.5, 2.0), Vec3::Y).len(), 1);
         // Inside the sphere.
         assert!(casters.cones(Vec3::new(0.0, -3.2, 0.0), Vec3::Y).is_empty());
+        // On it, where it touches a floor, and a rounding error off it:
+        // `r / d` would be 1 or more, the cone the whole half-space or
+        // NaN (checked with a mutant: a margin of `r^2 / 1.0001` fails).
+        let touching = one(Vec3::Y, 1.0);
+        for p in [Vec3::ZERO, Vec3::new(0.0, -1e-6, 0.0), Vec3::new(1e-3, 0.0, 0.0)] {
+            assert!(touching.cones(p, Vec3::Y).is_empty(), "{p}");
+        }
     }
 
     fn mirror(center: Vec3, radius: f32) -> Caster {
