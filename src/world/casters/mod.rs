@@ -236,7 +236,11 @@ mod tests {
         // `r / d` would be 1 or more, the cone the whole half-space or
         // NaN (checked with a mutant: a margin of `r^2 / 1.0001` fails).
         let touching = one(Vec3::Y, 1.0);
-        for p in [Vec3::ZERO, Vec3::new(0.0, -1e-6, 0.0), Vec3::new(1e-3, 0.0, 0.0)] {
+        for p in [
+            Vec3::ZERO,
+            Vec3::new(0.0, -1e-6, 0.0),
+            Vec3::new(1e-3, 0.0, 0.0),
+        ] {
             assert!(touching.cones(p, Vec3::Y).is_empty(), "{p}");
         }
     }
@@ -274,6 +278,30 @@ mod tests {
             let w = cones.sample(u, &casters).expect("a sphere-cone sample");
             assert_eq!(cones.pdf(w, &casters), sphere.pdf(w));
         }
+    }
+
+    #[test]
+    fn a_light_image_is_seen_from_the_vertex_itself() {
+        // A vertex away from the origin, a mirror sphere beside it and a
+        // light above: the image cone is the one from the vertex, not from
+        // the origin (checked with a mutant: the list's vertex left at the
+        // origin, `Cones::at` without `p`, fails).
+        let p = Vec3::new(2.0, 0.0, -1.5);
+        let center = p + Vec3::new(0.8, 0.6, 0.1);
+        let lamp = light(p + Vec3::new(-0.3, 3.0, 0.2), Vec3::NEG_Y);
+        let normal = images::reflection_normal(p, lamp.center, center, 0.3).expect("an image");
+        let image = images::image_cone(p, &mirror(center, 0.3), &lamp, 0.0).expect("a cone");
+        let sphere = Cone::of_sphere(center - p, (center - p).length_squared(), 0.09);
+        let casters = Casters {
+            spheres: vec![mirror(center, 0.3)],
+            lights: vec![lamp],
+        };
+        let cones = casters.cones(p, Vec3::Y);
+        assert_eq!(cones.len(), 2);
+        // Towards the point that mirrors the light's centre to the vertex.
+        let w = (center + 0.3 * normal - p).normalize();
+        assert!(image.pdf(w) > sphere.pdf(w) && sphere.pdf(w) > 0.0);
+        assert_eq!(cones.pdf(w, &casters), (sphere.pdf(w) + image.pdf(w)) / 2.0);
     }
 
     #[test]
