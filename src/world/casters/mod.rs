@@ -305,6 +305,40 @@ mod tests {
     }
 
     #[test]
+    fn each_cone_gets_its_share_of_u_x_stretched_back() {
+        // Two casters: `u.x` in `[j / 2, (j + 1) / 2)` draws from cone `j`
+        // with `2 u.x - j` (checked with mutants: the second cone handed
+        // `2 u.x + 1` or `2 u.x / 1`, clamped to its edge, fails).
+        let spheres = vec![
+            mirror(Vec3::new(-1.0, 1.0, 0.5), 0.3),
+            mirror(Vec3::new(1.2, 0.8, -0.4), 0.5),
+        ];
+        let own: Vec<Cone> = spheres
+            .iter()
+            .map(|s| Cone::of_sphere(s.center, s.center.length_squared(), s.radius * s.radius))
+            .collect();
+        let casters = Casters {
+            spheres,
+            lights: Vec::new(),
+        };
+        let cones = casters.cones(Vec3::ZERO, Vec3::Y);
+        assert_eq!(cones.len(), 2);
+        for (j, cone) in own.iter().enumerate() {
+            for i in 0..64 {
+                let t = (i % 8) as f32 / 8.0 + 0.03;
+                let v = (i / 8) as f32 / 8.0 + 0.05;
+                let w = cones.sample(Vec2::new((j as f32 + t) / 2.0, v), &casters);
+                let expected = cone.sample(Vec2::new(t, v));
+                let w = w.expect("a sphere's cone always gives a direction");
+                assert!(
+                    (w - expected).length() < 1e-5,
+                    "cone {j}, t {t}: {w} {expected}"
+                );
+            }
+        }
+    }
+
+    #[test]
     fn light_images_never_take_a_casters_place() {
         // Eight mirrors and two lights: eight cones and four images fit.
         let spheres = (0..MAX_CASTERS)
