@@ -170,7 +170,7 @@ impl EnvironmentLight {
             EnvironmentSampling::Importance => {
                 let map = &self.tables.map;
                 let s = (self.tables.distribution)
-                    .sample_hinted(u, |row, column| map.prefetch_around(column, row));
+                    .sample_hinted(u, |v, column| map.prefetch_sampled_texels(column, v));
                 let wi = uv_to_direction(s.x);
                 let pdf = per_steradian(s.pdf, wi);
                 (wi, pdf, map.lookup(s.x))
@@ -200,7 +200,7 @@ impl EnvironmentLight {
         if self.sampling == EnvironmentSampling::Importance {
             let map = &self.tables.map;
             (self.tables.distribution)
-                .prefetch_cdf(u, |row, column| map.prefetch_around(column, row));
+                .prefetch_cdf(u, |v, column| map.prefetch_sampled_texels(column, v));
         }
     }
 

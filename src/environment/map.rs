@@ -31,7 +31,8 @@
 //! usually means a map made by subtraction or a wrong colour conversion.
 //! Reading files: the private modules `reading` (what is wrong with a
 //! file, in plain words; OpenEXR windows), `radiance` (the Radiance
-//! format) and `exr_layout` (how long an OpenEXR file should be).
+//! format) and `exr_layout` (how long an OpenEXR file should be); the
+//! bilinear lookup and its cache hints are in the child module `lookup`.
 
 use std::f32::consts::PI;
 use std::fmt;
@@ -39,11 +40,12 @@ use std::path::Path;
 
 use glam::{Vec2, Vec3, Vec4};
 
-use crate::math::distribution::cell_of;
 use crate::math::float::readable;
 use crate::math::huge_pages;
 use crate::math::special::atan2;
 use crate::math::{Rgb, MAX_RADIANCE};
+
+mod lookup;
 
 /// An environment map that could not be used: the file (or the name of a
 /// map made in code) and what was wrong.
@@ -216,78 +218,6 @@ impl EnvironmentMap {
         }
     }
 
-    /// The cell `(column, row)` of `uv` in `[0, 1]^2`, as
-    /// [`crate::math::distribution::Distribution2D`] finds it (1 belongs to
-    /// the last cell).
-    fn cell(&self, uv: Vec2) -> usize {
-        cell_of(uv.y, self.height) * self.width + cell_of(uv.x, self.width)
-    }
-
-    /// Radiance at `(u, v)`, bilinear between texel centres (columns
-    /// wrapped around, rows clamped, as [`Self::texel`]).
-    #[doc(alias = "bilerp")]
-    pub fn lookup(&self, uv: Vec2) -> Rgb {
-        self.bilinear(uv).truncate()
-    }
-
-    /// [`Self::lookup`], and the density set for the cell of `uv` by
-    /// [`Self::set_cell_densities`] (0 if none was): the cell is one of
-    /// the four texels the lookup reads, so its density comes from a
-    /// cache line already loaded.
-    pub fn lookup_with_density(&self, uv: Vec2) -> (Rgb, f32) {
-        (self.lookup(uv), self.cell_density(uv))
-    }
-
-    /// The density set for the cell of `uv` by [`Self::set_cell_densities`]
-    /// (0 if none was), without the radiance.
-    pub fn cell_density(&self, uv: Vec2) -> f32 {
-        self.texels[self.cell(uv)].w
-    }
-
-    /// The four texels around `uv` interpolated, all four lanes.
-    fn bilinear(&self, uv: Vec2) -> Vec4 {
-        let x = uv.x * self.width as f32 - 0.5;
-        let y = uv.y * self.height as f32 - 0.5;
-        let (x0, y0) = (x.floor(), y.floor());
-        let (fx, fy) = (x - x0, y - y0);
-        // Wrapping by comparison, not by a division per texel (a hot path).
-        let (w, h) = (self.width as i64, self.height as i64);
-        let i0 = match x0 as i64 {
-            i if (0..w).contains(&i) => i,
-            i => i.rem_euclid(w),
-        } as usize;
-        let i1 = if i0 + 1 == self.width { 0 } else { i0 + 1 };
-        let j = y0 as i64;
-        let j0 = j.clamp(0, h - 1) as usize * self.width;
-        let j1 = (j + 1).clamp(0, h - 1) as usize * self.width;
-        let t = &self.texels;
-        let top = t[j0 + i0].lerp(t[j0 + i1], fx);
-        let bottom = t[j1 + i0].lerp(t[j1 + i1], fx);
-        top.lerp(bottom, fy)
-    }
-
-    /// Starts loading the texels a [`Self::lookup`] in cell `(i, j)` reads
-    /// (rows `j - 1` to `j + 1`, columns `i - 1` to `i + 1`), so that
-    /// their cache misses overlap other work; changes nothing else.
-    #[inline]
-    pub fn prefetch_around(&self, i: usize, j: usize) {
-        let first = i.saturating_sub(1);
-        for row in j.saturating_sub(1)..(j + 2).min(self.height) {
-            crate::math::prefetch::prefetch_lines(&self.texels[row * self.width + first], 2);
-        }
-    }
-
-    /// Starts loading the texels a look-up at `uv` reads; nothing else.
-    #[inline]
-    pub fn prefetch_uv(&self, uv: Vec2) {
-        self.prefetch_around(cell_of(uv.x, self.width), cell_of(uv.y, self.height));
-    }
-
-    /// Radiance arriving from the unit direction `d`.
-    pub fn radiance(&self, d: Vec3) -> Rgb {
-        self.lookup(direction_to_uv(d))
-    }
-
     /// Average over texel `(i, j)`'s cell of the bilinear interpolant:
     /// the kernel `[1 6 1] / 8` in each direction (on each half of the cell
     /// the interpolant runs linearly from a neighbour's mean with the texel
@@ -350,28 +280,6 @@ mod tests {
             let back = direction_to_uv(uv_to_direction(uv));
             assert!((back - uv).length() < 1e-5, "{uv} -> {back}");
         }
-    }
-
-    #[test]
-    fn lookup_is_bilinear_wraps_in_u_and_clamps_in_v() {
-        let texels = vec![
-            Rgb::splat(0.0),
-            Rgb::splat(1.0),
-            Rgb::splat(2.0),
-            Rgb::splat(3.0),
-            Rgb::splat(4.0),
-            Rgb::splat(5.0),
-            Rgb::splat(6.0),
-            Rgb::splat(7.0),
-        ];
-        let map = EnvironmentMap::new("test", 4, 2, texels).unwrap();
-        assert_eq!(map.lookup(Vec2::new(0.125, 0.25)), Rgb::splat(0.0));
-        assert_eq!(map.lookup(Vec2::new(0.25, 0.25)), Rgb::splat(0.5));
-        assert_eq!(map.lookup(Vec2::new(0.25, 0.5)), Rgb::splat(2.5));
-        // Across the seam: halfway between texels 3 and 0.
-        assert_eq!(map.lookup(Vec2::new(0.0, 0.25)), Rgb::splat(1.5));
-        assert_eq!(map.lookup(Vec2::new(0.125, 0.0)), Rgb::splat(0.0));
-        assert_eq!(map.lookup(Vec2::new(0.125, 1.0)), Rgb::splat(4.0));
     }
 
     #[test]

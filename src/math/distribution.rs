@@ -280,19 +280,20 @@ impl Distribution2D {
         self.sample_hinted(u, |_, _| {})
     }
 
-    /// [`Self::sample`], calling `hint(row, column)` once the row is drawn
-    /// and the guide table has given the column where the search starts
-    /// (the sample's column is that one or a few after it): a caller that
+    /// [`Self::sample`], calling `hint(v, column)` once the row is drawn
+    /// (`v` is the sample's second coordinate) and the guide table has
+    /// given the column where the search starts (the sample's column is
+    /// that one or a few after it): a caller that
     /// will read data of the sampled cell can start loading it there, so
     /// that its cache misses overlap the search's.
     pub fn sample_hinted(
         &self,
         u: Vec2,
-        hint: impl FnOnce(usize, usize),
+        hint: impl FnOnce(f32, usize),
     ) -> DistributionSample<Vec2> {
         let row = self.marginal.sample(u.y);
         let entry = self.guide_entry(row.cell, u.x);
-        hint(row.cell, self.guide[entry] as usize);
+        hint(row.x, self.guide[entry] as usize);
         let guide = &self.guide[row.cell * self.width..(row.cell + 1) * self.width];
         let column = sample_tables(self.row_cdf(row.cell), guide, u.x);
         DistributionSample {
@@ -322,15 +323,15 @@ impl Distribution2D {
 
     /// The second step after [`Self::prefetch_guide`]: reads the guide
     /// entry (loaded by then) and starts loading the cdf where the search
-    /// will start, and, through `hint(row, column)` as in
+    /// will start, and, through `hint(v, column)` as in
     /// [`Self::sample_hinted`], whatever the caller reads at the cell.
     /// Changes nothing else.
     #[inline]
-    pub fn prefetch_cdf(&self, u: Vec2, hint: impl FnOnce(usize, usize)) {
-        let row = self.marginal.sample(u.y).cell;
-        let column = self.guide[self.guide_entry(row, u.x)] as usize;
-        crate::math::prefetch::prefetch_lines(&self.row_cdf(row)[column], 1);
-        hint(row, column);
+    pub fn prefetch_cdf(&self, u: Vec2, hint: impl FnOnce(f32, usize)) {
+        let row = self.marginal.sample(u.y);
+        let column = self.guide[self.guide_entry(row.cell, u.x)] as usize;
+        crate::math::prefetch::prefetch_lines(&self.row_cdf(row.cell)[column], 1);
+        hint(row.x, column);
     }
 
     /// Density at `p` in `[0, 1]^2`, per unit area.

@@ -131,18 +131,18 @@ fn a_sample_just_below_a_guide_boundary_steps_back() {
     assert!((s.pdf - 1.0).abs() < 1e-5, "{}", s.pdf);
 }
 
-/// The hint sees the sample's row and the column its search starts
+/// The hint sees the sample's `v` and the column its search starts
 /// from, at or before the sampled one, and changes nothing.
 #[test]
-fn the_hint_names_the_row_and_where_the_search_starts() {
+fn the_hint_names_the_samples_v_and_where_the_search_starts() {
     let f: Vec<f32> = (0..64 * 8).map(|k| ((k * 37) % 11) as f32).collect();
     let d = Distribution2D::new(&f, 64, 8);
     for k in 0..1000 {
         let u = Vec2::new((k as f32 * 0.618_034).fract(), k as f32 / 1000.0);
         let mut seen = None;
-        let s = d.sample_hinted(u, |row, column| seen = Some((row, column)));
-        let (row, column) = seen.expect("the hint is called");
-        assert_eq!(row, d.marginal.cell_of(s.x.y), "u {u}");
+        let s = d.sample_hinted(u, |v, column| seen = Some((v, column)));
+        let (v, column) = seen.expect("the hint is called");
+        assert_eq!(v, s.x.y, "u {u}");
         assert!(column <= s.cell, "u {u}: hint {column}, cell {}", s.cell);
         assert_eq!(s, d.sample(u));
     }
