@@ -198,6 +198,39 @@ mod tests {
         d - 2.0 * d.dot(n) * n
     }
 
+    /// Which casters show light images, as [`image_spread`] states it:
+    /// images change the variance, not the mean, so no estimator test
+    /// sees a sphere get one it should not (checked with mutants: every
+    /// kind given `Some(0)`, `Some(1)` or `Some(-1)`, or the roughness
+    /// limit dropped, fails).
+    #[test]
+    fn mirrors_and_smooth_conductors_show_images_glass_and_rough_metal_not() {
+        use crate::scene::Material;
+        let metal = |alpha| Material::Microfacet {
+            alpha,
+            eta: Vec3::splat(0.2),
+            k: Vec3::splat(3.0),
+        };
+        let mirror = Material::Mirror {
+            reflectance: Vec3::ONE,
+        };
+        assert_eq!(image_spread(&mirror), Some(0.0));
+        assert_eq!(image_spread(&metal(0.02)), Some(IMAGE_LOBE * 0.02));
+        assert_eq!(
+            image_spread(&metal(IMAGE_ALPHA)),
+            Some(IMAGE_LOBE * IMAGE_ALPHA)
+        );
+        assert_eq!(image_spread(&metal(0.2)), None);
+        let glass = Material::Glass {
+            reflectance: Vec3::ONE,
+            transmittance: Vec3::ONE,
+            roughness: 0.0,
+            ior: 1.5,
+        };
+        assert_eq!(image_spread(&glass), None);
+        assert_eq!(image_spread(&Material::DEFAULT), None);
+    }
+
     #[test]
     fn the_reflection_normal_bisects_the_two_directions() {
         let (c, r) = (Vec3::new(-0.4, 0.3, -0.3), 0.3);
