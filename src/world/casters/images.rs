@@ -70,11 +70,11 @@ pub const ITERATIONS: usize = 2;
 /// (`1e-2` at 76).
 pub const SETTLED: f32 = 3e-2;
 
-/// The narrowest image cone, by the sine of its half-angle: a narrower one
-/// (a tiny light, or a tiny sphere far away) would be thinner than the
-/// rounding of its own samples' directions (about `1e-7` in the sine) times
-/// [`super::cone`]'s edge margin allows, so some of its samples would be
-/// scored outside it; such a vertex has the sphere's cone instead.
+/// The narrowest image cone, by the sine of its half-angle: in a narrower
+/// one (a tiny light, or a tiny sphere far away) the rounding of its own
+/// samples' directions (about `1e-7` in the sine), and the margin of
+/// `5e-7` radians that [`super::cone`] adds at its edge for it, would be
+/// a larger share of the cone; such a vertex has the sphere's cone instead.
 pub const MIN_IMAGE_SINE: f32 = 1e-2;
 
 /// The largest Beckmann roughness of a conductor sphere that gets light
