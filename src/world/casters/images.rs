@@ -231,6 +231,41 @@ mod tests {
         assert_eq!(image_spread(&Material::DEFAULT), None);
     }
 
+    /// The lights that images look for: each rectangle that emits, as the
+    /// disc around its centre that holds it (radius half its diagonal),
+    /// facing its emitting side; a dark one and a point light have none
+    /// (checked with mutants: a dark rectangle kept, or the radius as
+    /// `0.5 + diagonal`, fails).
+    #[test]
+    fn lights_are_imaged_as_the_discs_that_hold_the_emitting_rectangles() {
+        use crate::lights::{LightConvention, LightSet};
+        use crate::scene::{Light, Scene};
+        let rect = |radiance| Light::Area {
+            radiance,
+            center: Vec3::new(0.5, 2.0, -0.5),
+            direction: Vec3::NEG_Y,
+            dim_x: Vec3::new(0.6, 0.0, 0.0),
+            dim_y: Vec3::new(0.0, 0.0, 0.8),
+        };
+        let point = Light::Point {
+            intensity: Vec3::ONE,
+            position: Vec3::Y,
+        };
+        let scene = Scene {
+            lights: vec![rect(Vec3::ZERO), point, rect(Vec3::new(0.0, 0.0, 2.0))],
+            ..Scene::default()
+        };
+        let imaged = ImagedLight::of(&LightSet::new(&scene, LightConvention::Physical));
+        assert_eq!(
+            imaged,
+            vec![ImagedLight {
+                center: Vec3::new(0.5, 2.0, -0.5),
+                normal: Vec3::NEG_Y,
+                radius: 0.5,
+            }]
+        );
+    }
+
     #[test]
     fn the_reflection_normal_bisects_the_two_directions() {
         let (c, r) = (Vec3::new(-0.4, 0.3, -0.3), 0.3);
