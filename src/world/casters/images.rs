@@ -235,7 +235,7 @@ mod tests {
     /// disc around its centre that holds it (radius half its diagonal),
     /// facing its emitting side; a dark one and a point light have none
     /// (checked with mutants: a dark rectangle kept, or the radius as
-    /// `0.5 + diagonal`, fails).
+    /// `0.5 + diagonal` or `0.5 / diagonal`, fails).
     #[test]
     fn lights_are_imaged_as_the_discs_that_hold_the_emitting_rectangles() {
         use crate::lights::{LightConvention, LightSet};
@@ -244,8 +244,8 @@ mod tests {
             radiance,
             center: Vec3::new(0.5, 2.0, -0.5),
             direction: Vec3::NEG_Y,
-            dim_x: Vec3::new(0.6, 0.0, 0.0),
-            dim_y: Vec3::new(0.0, 0.0, 0.8),
+            dim_x: Vec3::new(1.2, 0.0, 0.0),
+            dim_y: Vec3::new(0.0, 0.0, 1.6),
         };
         let point = Light::Point {
             intensity: Vec3::ONE,
@@ -261,7 +261,7 @@ mod tests {
             vec![ImagedLight {
                 center: Vec3::new(0.5, 2.0, -0.5),
                 normal: Vec3::NEG_Y,
-                radius: 0.5,
+                radius: 1.0,
             }]
         );
     }
