@@ -290,6 +290,37 @@ mod tests {
         .is_none());
     }
 
+    /// Where two steps leave the reflection point unsettled, there is no
+    /// image: here the last step moved `n` by 0.149, past [`SETTLED`]
+    /// (checked with mutants: the test as `step < SETTLED + SETTLED`, `/`,
+    /// or `||` with the side test, fails).
+    #[test]
+    fn an_unsettled_reflection_point_gives_no_image() {
+        let x = Vec3::new(1.2, 0.0, 0.0);
+        let y = Vec3::new(1.060_660_1, 1.060_660_1, 0.45);
+        assert_eq!(reflection_normal(x, y, Vec3::ZERO, 1.0), None);
+    }
+
+    /// The reflection point moves with the scene: the same normal, to
+    /// rounding, with everything moved 50 units along each axis either
+    /// way (checked with mutants: the side test on `x + s` or `y + s`
+    /// instead of `x - s`, `y - s`, fails).
+    #[test]
+    fn the_reflection_normal_does_not_depend_on_where_the_scene_is() {
+        let (c, r) = (Vec3::new(-0.4, 0.3, -0.3), 0.3);
+        let y = Vec3::new(0.0, 1.49, 0.0);
+        for x in [Vec3::new(0.5, 0.0, 0.5), Vec3::new(-1.0, 0.7, 0.2)] {
+            let n = reflection_normal(x, y, c, r).expect("an image");
+            for axis in [Vec3::X, Vec3::Y, Vec3::Z] {
+                for t in [50.0 * axis, -50.0 * axis] {
+                    let moved = reflection_normal(x + t, y + t, c + t, r);
+                    let moved = moved.unwrap_or_else(|| panic!("{x} moved by {t}: no image"));
+                    assert!((moved - n).length() < 1e-3, "{x} moved by {t}: {moved}, {n}");
+                }
+            }
+        }
+    }
+
     /// Directions uniform in the sphere's cone from points of a Cornell
     /// box's floor and walls, reflected by the mirror sphere: every one
     /// that reaches the light is inside the image cone, which is narrower
