@@ -315,10 +315,31 @@ mod tests {
                 for t in [50.0 * axis, -50.0 * axis] {
                     let moved = reflection_normal(x + t, y + t, c + t, r);
                     let moved = moved.unwrap_or_else(|| panic!("{x} moved by {t}: no image"));
-                    assert!((moved - n).length() < 1e-3, "{x} moved by {t}: {moved}, {n}");
+                    assert!(
+                        (moved - n).length() < 1e-3,
+                        "{x} moved by {t}: {moved}, {n}"
+                    );
                 }
             }
         }
+    }
+
+    /// A glossy conductor's image is the mirror's widened by its lobe:
+    /// the same axis, a wider cone (checked with a mutant: the spread
+    /// subtracted from the light's sine instead of added fails).
+    #[test]
+    fn a_glossy_casters_image_is_the_mirrors_widened() {
+        let caster = Caster {
+            center: Vec3::new(-0.4, 0.3, -0.3),
+            radius: 0.3,
+            image_spread: Some(0.0),
+        };
+        let (light, _, _) = ceiling_light();
+        let x = Vec3::new(0.3, 0.0, 0.2);
+        let mirror = image_cone(x, &caster, &light, 0.0).expect("an image cone");
+        let glossy = image_cone(x, &caster, &light, 0.05).expect("an image cone");
+        let axis = mirror.sample(glam::Vec2::ZERO);
+        assert!(glossy.pdf(axis) > 0.0 && glossy.solid_angle() > 1.1 * mirror.solid_angle());
     }
 
     /// Directions uniform in the sphere's cone from points of a Cornell
