@@ -342,6 +342,30 @@ mod tests {
         assert!(glossy.pdf(axis) > 0.0 && glossy.solid_angle() > 1.1 * mirror.solid_angle());
     }
 
+    /// Where the light's image would fill more than the sphere's own cone
+    /// (a large light in the roughest conductor that gets images, seen
+    /// from below the sphere's centre), the vertex keeps the sphere's cone
+    /// alone (checked with mutants: the sphere's squared sine as
+    /// `r^2 d^2`, `r^2 % d^2` or `r + r / d^2`, which let the image
+    /// through, fail).
+    #[test]
+    fn an_image_wider_than_its_sphere_is_no_image() {
+        let caster = Caster {
+            center: Vec3::new(-0.4, 0.3, -0.3),
+            radius: 0.3,
+            image_spread: Some(IMAGE_LOBE * IMAGE_ALPHA),
+        };
+        let (light, _, _) = ceiling_light();
+        let large = ImagedLight {
+            radius: 2.0,
+            ..light
+        };
+        let x = Vec3::new(0.5, -0.5, 0.0);
+        assert!(reflection_normal(x, light.center, caster.center, caster.radius).is_some());
+        assert!(image_cone(x, &caster, &light, 0.0).is_some());
+        assert!(image_cone(x, &caster, &large, IMAGE_LOBE * IMAGE_ALPHA).is_none());
+    }
+
     /// Directions uniform in the sphere's cone from points of a Cornell
     /// box's floor and walls, reflected by the mirror sphere: every one
     /// that reaches the light is inside the image cone, which is narrower
