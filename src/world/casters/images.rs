@@ -194,6 +194,16 @@ mod tests {
         (light, Vec3::new(0.3, 0.0, 0.0), Vec3::new(0.0, 0.0, 0.4))
     }
 
+    /// A mirror sphere of radius 0.3 on the floor under
+    /// [`ceiling_light`], off its centre.
+    fn cornell_mirror() -> Caster {
+        Caster {
+            center: Vec3::new(-0.4, 0.3, -0.3),
+            radius: 0.3,
+            image_spread: Some(0.0),
+        }
+    }
+
     fn reflect(d: Vec3, n: Vec3) -> Vec3 {
         d - 2.0 * d.dot(n) * n
     }
@@ -329,11 +339,7 @@ mod tests {
     /// subtracted from the light's sine instead of added fails).
     #[test]
     fn a_glossy_casters_image_is_the_mirrors_widened() {
-        let caster = Caster {
-            center: Vec3::new(-0.4, 0.3, -0.3),
-            radius: 0.3,
-            image_spread: Some(0.0),
-        };
+        let caster = cornell_mirror();
         let (light, _, _) = ceiling_light();
         let x = Vec3::new(0.3, 0.0, 0.2);
         let mirror = image_cone(x, &caster, &light, 0.0).expect("an image cone");
@@ -351,9 +357,8 @@ mod tests {
     #[test]
     fn an_image_wider_than_its_sphere_is_no_image() {
         let caster = Caster {
-            center: Vec3::new(-0.4, 0.3, -0.3),
-            radius: 0.3,
             image_spread: Some(IMAGE_LOBE * IMAGE_ALPHA),
+            ..cornell_mirror()
         };
         let (light, _, _) = ceiling_light();
         let large = ImagedLight {
@@ -372,11 +377,7 @@ mod tests {
     /// than the sphere's and not much wider than those directions.
     #[test]
     fn the_image_cone_holds_the_directions_that_reach_the_light() {
-        let caster = Caster {
-            center: Vec3::new(-0.4, 0.3, -0.3),
-            radius: 0.3,
-            image_spread: Some(0.0),
-        };
+        let caster = cornell_mirror();
         let (light, half_x, half_z) = ceiling_light();
         let points = [
             Vec3::new(0.3, 0.0, 0.2),
