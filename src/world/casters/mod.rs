@@ -336,6 +336,14 @@ mod tests {
                 );
             }
         }
+        // `u.x = 1`, just outside `[0, 1)`, takes the last cone's edge, not
+        // a slot past the list (checked with mutants: the last index as
+        // `count + 1` or `count / 1` fails).
+        let edge = own[1].sample(Vec2::new(crate::math::float::ONE_BELOW_ONE, 0.5));
+        let last = cones
+            .sample(Vec2::new(1.0, 0.5), &casters)
+            .expect("a direction");
+        assert!((last - edge).length() < 1e-5, "{last} {edge}");
     }
 
     #[test]
