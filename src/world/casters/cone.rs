@@ -5,7 +5,7 @@
 //! A cone is kept as its axis `a` (not necessarily unit) and the squared
 //! sine of its half-angle times `|a|^2`: a unit direction `w` is inside
 //! when `|w x a|^2 <= sin^2(theta_max) |a|^2` with `w . a > 0` (the bound
-//! widened by the rounding of a drawn direction, [`EDGE_ANGLE`]). For a
+//! widened by the rounding of a drawn direction, `EDGE_ANGLE`). For a
 //! sphere of radius `r` whose centre is at `a` from the point, that bound
 //! is `r^2`, and the test needs no square root and no cosine (which, for
 //! a small sphere far away, agrees with `cos(theta_max)` to all of `f32`'s
