@@ -7,7 +7,7 @@
 //! when `|w x a|^2 <= sin^2(theta_max) |a|^2` with `w . a > 0` (the bound
 //! widened by the rounding of a drawn direction, `EDGE_ANGLE`). For a
 //! sphere of radius `r` whose centre is at `a` from the point, that bound
-//! is `r^2`, and the test needs no square root and no cosine (which, for
+//! is `r^2` (widened, `(r + EDGE_ANGLE |a|)^2`), and the test needs no square root and no cosine (which, for
 //! a small sphere far away, agrees with `cos(theta_max)` to all of `f32`'s
 //! digits). Uniform in the cone, the density is
 //! `1 / (2 pi (1 - cos(theta_max)))` (pbrt-v4, section 6.2.4).
@@ -29,6 +29,14 @@ use crate::math::Frame;
 /// `2 EDGE_ANGLE / theta_max` of the cone's, is missed: `1e-3` of it for
 /// a cone of `1e-3` radians.
 const EDGE_ANGLE: f32 = 5e-7;
+
+/// The bound on `|w x axis|^2` of a cone whose `sin(theta_max) |axis|` is
+/// `edge`, for `|axis| = length`, widened by [`EDGE_ANGLE`]:
+/// `(edge + EDGE_ANGLE length)^2`.
+fn widened_bound(edge: f32, length: f32) -> f32 {
+    let widened = edge + EDGE_ANGLE * length;
+    widened * widened
+}
 
 /// A cone of directions from a point, kept as what its sampling and
 /// density need.
@@ -58,10 +66,9 @@ impl Cone {
     /// (`d2 > r2`): `1 - cos(theta_max) = r^2 / (d (d + sqrt(d^2 - r^2)))`.
     pub fn of_sphere(to_center: Vec3, d2: f32, r2: f32) -> Self {
         let d = d2.sqrt();
-        let edge = r2.sqrt() + EDGE_ANGLE * d;
         Cone {
             axis: to_center,
-            bound: edge * edge,
+            bound: widened_bound(r2.sqrt(), d),
             one_minus_cos_max: r2 / (d * (d + (d2 - r2).sqrt())),
         }
     }
@@ -73,7 +80,7 @@ impl Cone {
         let sin2 = sin_max * sin_max;
         Cone {
             axis,
-            bound: (sin_max + EDGE_ANGLE) * (sin_max + EDGE_ANGLE),
+            bound: widened_bound(sin_max, 1.0),
             one_minus_cos_max: sin2 / (1.0 + (1.0 - sin2).sqrt()),
         }
     }
