@@ -54,8 +54,9 @@ use crate::math::Rgb;
 use crate::scene::Light as SceneLight;
 
 /// The unit normal of the plane the edges `a` and `b` span, on the side of
-/// `direction` (the file's emitting direction, kept when the edges span
-/// no plane).
+/// `direction` (the file's emitting direction, kept as it is when the
+/// edges span no plane or it lies in their plane: the file contradicts
+/// itself, and its stated direction is the one clue left).
 fn plane_normal(a: Vec3, b: Vec3, direction: Vec3) -> Vec3 {
     let n = a.cross(b).normalize_or_zero();
     match n.dot(direction) {
@@ -261,3 +262,6 @@ impl Light {
         }
     }
 }
+
+#[cfg(test)]
+mod tests;

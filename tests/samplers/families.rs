@@ -280,6 +280,20 @@ pub fn families() -> Vec<Family> {
             rect_light(1.0, Vec3::new(0.2, 0.4, 0.1), -Vec3::Y, 1.5, 1.0),
             Vec3::ZERO,
         ),
+        // A sheared light (a transform in the file can shear it): its
+        // crossing test works in the edges' dual basis, whose cross terms
+        // a rectangle's orthogonal edges set to zero.
+        light_family(
+            "area light, a parallelogram",
+            Light::Area {
+                radiance: Vec3::ONE,
+                center: Vec3::new(0.3, 1.2, -0.2),
+                direction: Vec3::new(0.2, -1.0, 0.1),
+                dim_x: Vec3::new(1.2, 0.1, 0.0),
+                dim_y: Vec3::new(0.8, -0.05, 0.9),
+            },
+            Vec3::new(-0.2, 0.0, 0.1),
+        ),
         light_family(
             "ambient sky",
             Light::Ambient {
