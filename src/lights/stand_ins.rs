@@ -101,3 +101,66 @@ fn shows(scene: &Scene, corners: &[u32; 3], light: &SceneLight) -> bool {
         q.length() <= 0.55 * diagonal && in_front <= 1e-4 * diagonal && in_front >= -0.01 * diagonal
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::builtin::cornell_box;
+    use glam::Vec3;
+
+    /// The Cornell box with its lamp's quad moved by `moved(q)`, `q` a
+    /// corner relative to the light's centre, in units of the light's
+    /// diagonal and along its emitting direction: what `StandIns::of`
+    /// says of it (does the quad show the light?).
+    fn shows_after(moved: impl Fn(Vec3, Vec3, f32) -> Vec3) -> bool {
+        let mut scene = cornell_box();
+        let SceneLight::Area {
+            center,
+            direction,
+            dim_x,
+            dim_y,
+            ..
+        } = scene.lights[0]
+        else {
+            unreachable!("the box's light is an area light")
+        };
+        let diagonal = (dim_x + dim_y).length().max((dim_x - dim_y).length());
+        let mut quad = Vec::new();
+        for (t, &m) in scene.mesh.triangles.iter().zip(&scene.mesh.materials) {
+            if matches!(scene.materials[m as usize], Material::Emission { .. }) {
+                quad.extend(t.iter().map(|&v| v as usize));
+            }
+        }
+        quad.sort_unstable();
+        quad.dedup();
+        assert_eq!(quad.len(), 4, "the lamp is one quad");
+        for v in quad {
+            let q = scene.mesh.positions[v] - center;
+            scene.mesh.positions[v] = center + moved(q, direction, diagonal);
+        }
+        let stand_ins = StandIns::of(&scene);
+        assert_eq!(stand_ins.materials.iter().any(|&m| m), stand_ins.lights[0]);
+        stand_ins.lights[0]
+    }
+
+    // Each fails with a mutant of `shows`' bounds: the 0.55 of the
+    // diagonal, the 1 % behind the light, the 1e-4 in front of it, or a
+    // comparison turned around.
+    #[test]
+    fn a_quad_on_its_lamp_or_just_behind_it_stands_in_for_it() {
+        assert!(shows_after(|q, _, _| q));
+        // Behind the light by 0.9 % of its diagonal, or in front by 5e-5:
+        // within the tolerances.
+        assert!(shows_after(|q, d, diag| q - 0.009 * diag * d));
+        assert!(shows_after(|q, d, diag| q + 5e-5 * diag * d));
+        // Grown until its corners lie 0.54 of the diagonal from the centre.
+        assert!(shows_after(|q, _, diag| q.normalize() * 0.54 * diag));
+    }
+
+    #[test]
+    fn a_quad_too_far_behind_in_front_or_too_large_does_not() {
+        assert!(!shows_after(|q, d, diag| q - 0.011 * diag * d));
+        assert!(!shows_after(|q, d, diag| q + 2e-4 * diag * d));
+        assert!(!shows_after(|q, _, diag| q.normalize() * 0.56 * diag));
+    }
+}
