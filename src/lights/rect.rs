@@ -140,3 +140,94 @@ impl RectLight {
         std::f32::consts::PI * self.area() * self.radiance
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A light at `center` emitting upwards (+Y), with edges `a` and `b`
+    /// in the plane `y = center.y`.
+    fn facing_up(center: Vec3, a: Vec3, b: Vec3) -> RectLight {
+        RectLight {
+            radiance: Rgb::splat(1.0),
+            center,
+            normal: Vec3::Y,
+            dim_x: a,
+            dim_y: b,
+            convention: LightConvention::Physical,
+        }
+    }
+
+    // Fails if either diagonal's `+` or `-` changes, or the longer one is
+    // not the one taken: a sheared light's diagonals differ, and which is
+    // longer depends on the shear's sign.
+    #[test]
+    fn the_diagonal_is_the_parallelograms_longer_one() {
+        let a = Vec3::new(2.0, 0.0, 0.0);
+        let long = 10f32.sqrt();
+        let sheared = facing_up(Vec3::ZERO, a, Vec3::new(0.0, 0.0, 1.0) + Vec3::X);
+        assert!((sheared.diagonal() - long).abs() < 1e-6);
+        let other_way = facing_up(Vec3::ZERO, a, Vec3::new(0.0, 0.0, 1.0) - Vec3::X);
+        assert!((other_way.diagonal() - long).abs() < 1e-6);
+        let square = facing_up(Vec3::ZERO, Vec3::X, Vec3::Z);
+        assert!((square.diagonal() - 2f32.sqrt()).abs() < 1e-6);
+        assert!((sheared.area() - 2.0).abs() < 1e-6);
+    }
+
+    // A ray from one unit above the light's centre meets it at `t = 1`
+    // exactly: the interval's ends count (`>=` and `<=`), and past them
+    // it misses. Fails with either comparison turned or made strict.
+    #[test]
+    fn a_ray_meets_the_light_within_its_interval_ends_included() {
+        let light = facing_up(Vec3::ZERO, Vec3::X, Vec3::Z);
+        let ray = |t_min: f32, t_max: f32| Ray {
+            origin: Vec3::Y,
+            dir: Vec3::NEG_Y,
+            t_min,
+            t_max,
+        };
+        assert_eq!(light.hit_distance(&ray(0.0, f32::INFINITY)), Some(1.0));
+        assert_eq!(light.hit_distance(&ray(1.0, 2.0)), Some(1.0));
+        assert_eq!(light.hit_distance(&ray(0.0, 1.0)), Some(1.0));
+        assert_eq!(light.hit_distance(&ray(1.001, 2.0)), None);
+        assert_eq!(light.hit_distance(&ray(0.0, 0.999)), None);
+        // From below, the light's back: nothing.
+        let below = Ray::new(Vec3::NEG_Y, Vec3::Y);
+        assert_eq!(light.hit_distance(&below), None);
+    }
+
+    // Where the ray crosses the plane decides: inside the parallelogram,
+    // not merely inside its bounding rectangle. Fails if a cross term of
+    // the dual basis (`ab`) changes, which a rectangle's orthogonal edges
+    // cannot show.
+    #[test]
+    fn a_sheared_light_is_met_only_inside_its_parallelogram() {
+        let light = facing_up(Vec3::ZERO, Vec3::X * 2.0, Vec3::new(1.0, 0.0, 1.0));
+        let from = Vec3::new(0.0, 1.0, 0.0);
+        let towards = |x: f32, z: f32| (Vec3::new(x, 0.0, z) - from).normalize();
+        // Points `s a + t b` for `|s|, |t| < 1/2` and just outside.
+        for (s, t, inside) in [
+            (0.45, 0.45, true),
+            (-0.45, 0.45, true),
+            (0.45, -0.45, true),
+            (0.0, 0.0, true),
+            (0.55, 0.0, false),
+            (0.0, 0.55, false),
+            (-0.3, -0.55, false),
+        ] {
+            let q = s * light.dim_x + t * light.dim_y;
+            let crossing = light.crossing(from, towards(q.x, q.z));
+            assert_eq!(crossing.is_some(), inside, "s {s}, t {t}");
+            if let Some(distance) = crossing {
+                assert!(
+                    (distance - (q - from).length()).abs() < 1e-5,
+                    "s {s}, t {t}"
+                );
+            }
+        }
+        // Inside the bounding box of the parallelogram, outside it: a
+        // rectangle test with the edges' lengths would take it.
+        let q = Vec3::new(-1.4, 0.0, 0.45);
+        assert!(light.crossing(from, towards(q.x, q.z)).is_none());
+    }
+}

@@ -179,7 +179,11 @@ fn the_course_convention_scales_samples_as_the_starter_does() {
     let course = point(LightConvention::Course)
         .sample_li(Vec3::ZERO)
         .unwrap();
-    assert_eq!(physical.distance, 3.0);
+    assert_eq!((physical.distance, physical.wi), (3.0, Vec3::Y));
+    assert_eq!(physical.pdf, LightPdf::Delta);
+    // At the light itself there is no direction to it.
+    let at = Vec3::new(0.0, 3.0, 0.0);
+    assert_eq!(point(LightConvention::Physical).sample_li(at), None);
     assert!((physical.radiance - intensity / 9.0).abs().max_element() < 1e-6);
     assert!((course.radiance - intensity).abs().max_element() < 1e-5);
 
