@@ -81,3 +81,62 @@ impl SurfacePoint {
         (cos_emitter > 0.0 && pdf > 0.0 && pdf.is_finite()).then_some(pdf)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A point at `(0, 2, 0)` emitting downwards, chosen with density 1/4
+    /// per unit area.
+    fn lamp(two_sided: bool) -> SurfacePoint {
+        SurfacePoint {
+            q: Vec3::new(0.0, 2.0, 0.0),
+            normal: Vec3::NEG_Y,
+            two_sided,
+            radiance: Rgb::new(1.0, 2.0, 3.0),
+            area_pdf: 0.25,
+        }
+    }
+
+    fn solid_angle(sample: LightSample) -> f32 {
+        match sample.pdf {
+            LightPdf::SolidAngle(pdf) => pdf,
+            LightPdf::Delta => panic!("a surface point is no delta light"),
+        }
+    }
+
+    // `p_A r^2 / cos_e` by numbers: straight below (r^2 = 4, cos 1) and
+    // at 45 degrees (r^2 = 8, cos 1/sqrt(2)). Fails if a factor is
+    // dropped, inverted or added to, or the cosine's sign is lost.
+    #[test]
+    fn an_area_density_becomes_p_a_r2_over_cos_per_steradian() {
+        let below = lamp(false).seen_from(Vec3::ZERO).unwrap();
+        assert_eq!(below.wi, Vec3::Y);
+        assert_eq!(below.distance, 2.0);
+        assert_eq!(below.radiance, Rgb::new(1.0, 2.0, 3.0));
+        assert!((solid_angle(below) - 1.0).abs() < 1e-6);
+        let oblique = lamp(false).seen_from(Vec3::new(2.0, 0.0, 0.0)).unwrap();
+        assert!((oblique.distance - 8f32.sqrt()).abs() < 1e-6);
+        assert!((solid_angle(oblique) - 2.0 * 2f32.sqrt()).abs() < 1e-5);
+    }
+
+    // From above, the one-sided lamp's back shows nothing, the two-sided
+    // one's the same density as from below. At the point itself, and
+    // along the emitting plane (cos 0: an infinite density), there is no
+    // sample. Fails if `abs` goes, or a guard is turned or dropped.
+    #[test]
+    fn a_back_a_point_on_the_light_and_a_grazing_view_give_no_sample() {
+        let above = Vec3::new(0.0, 4.0, 0.0);
+        assert_eq!(lamp(false).seen_from(above), None);
+        let back = lamp(true).seen_from(above).unwrap();
+        assert!((solid_angle(back) - 1.0).abs() < 1e-6);
+        assert_eq!(back.wi, Vec3::NEG_Y);
+        assert_eq!(lamp(true).seen_from(lamp(true).q), None);
+        assert_eq!(lamp(true).seen_from(Vec3::new(3.0, 2.0, 0.0)), None);
+        let nowhere = SurfacePoint {
+            area_pdf: 0.0,
+            ..lamp(true)
+        };
+        assert_eq!(nowhere.seen_from(Vec3::ZERO), None);
+    }
+}
