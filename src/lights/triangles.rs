@@ -147,3 +147,98 @@ impl EmissiveTriangles {
             .sum()
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::lights::LightPdf;
+    use crate::scene::Material;
+
+    /// Four triangles in the plane `y = 2`, facing down: `0` of area 1/2
+    /// and radiance 1 (material 0), `1` of area 1/2 and radiance 3
+    /// (material 1), `2` with no area (material 1), `3` diffuse
+    /// (material 2); material 3, emissive, is not to be sampled.
+    fn scene() -> (Scene, Vec<bool>) {
+        let mut scene = Scene::default();
+        let at = |x: f32, z: f32| Vec3::new(x, 2.0, z);
+        scene.mesh.positions = vec![
+            at(0.0, 0.0),
+            at(1.0, 0.0),
+            at(0.0, 1.0),
+            at(3.0, 0.0),
+            at(4.0, 0.0),
+            at(3.0, 1.0),
+            at(5.0, 0.0),
+            at(6.0, 0.0),
+        ];
+        scene.mesh.triangles = vec![[0, 1, 2], [3, 4, 5], [6, 7, 6], [0, 2, 1]];
+        scene.mesh.materials = vec![0, 1, 1, 2];
+        scene.materials = vec![
+            Material::Emission {
+                radiance: Rgb::splat(1.0),
+            },
+            Material::Emission {
+                radiance: Rgb::splat(3.0),
+            },
+            Material::Diffuse {
+                albedo: Rgb::splat(0.5),
+            },
+            Material::Emission {
+                radiance: Rgb::splat(7.0),
+            },
+        ];
+        (scene, vec![true, true, true, false])
+    }
+
+    // Only sampled materials that emit, on triangles with an area, join
+    // the light. Fails if the material, emission or area guard goes.
+    #[test]
+    fn only_emitting_triangles_with_an_area_join_the_light() {
+        let (scene, sampled) = scene();
+        let light = EmissiveTriangles::new(&scene, &sampled);
+        assert_eq!(light.triangle_ids(), &[0, 1]);
+        assert_eq!((light.len(), light.is_empty()), (2, false));
+        // Both sides of each: 2 pi A L.
+        let expected = 2.0 * std::f32::consts::PI * 0.5 * (1.0 + 3.0);
+        assert!((light.power() - Rgb::splat(expected)).abs().max_element() < 1e-5);
+        let none = EmissiveTriangles::new(&scene, &[false; 4]);
+        assert!(none.is_empty() && none.len() == 0);
+        assert_eq!(none.sample_li(Vec3::ZERO, 0.5, Vec2::splat(0.5)), None);
+    }
+
+    // Picks in proportion to power, 1 : 3 here: `pick` below 1/4 takes
+    // the first, above it the second. The density of a sample, queried
+    // where it lands, is the sample's own: `(P_i / P) r^2 / (A_i cos)`.
+    // Fails if the pick, the point or the density's pieces change, or an
+    // unknown member gets a density.
+    #[test]
+    fn samples_pick_by_power_and_their_density_is_the_queried_one() {
+        let (scene, sampled) = scene();
+        let light = EmissiveTriangles::new(&scene, &sampled);
+        let p = Vec3::new(1.0, 0.0, 0.5);
+        for (pick, member) in [(0.2, 0u32), (0.3, 1)] {
+            let u = Vec2::new(0.4, 0.7);
+            let s = light.sample_li(p, pick, u).unwrap();
+            let q = p + s.wi * s.distance;
+            let corners =
+                if member == 0 { [0, 1, 2] } else { [3, 4, 5] }.map(|v| scene.mesh.positions[v]);
+            let b = sample_uniform_triangle(u);
+            let expected_q = b.x * corners[0] + b.y * corners[1] + b.z * corners[2];
+            assert!((q - expected_q).length() < 1e-5, "{pick}: {q} {expected_q}");
+            let share = if member == 0 { 0.25 } else { 0.75 };
+            let r2 = (q - p).length_squared();
+            let cos = (q - p).normalize().y;
+            let expected = share * r2 / (0.5 * cos);
+            let LightPdf::SolidAngle(pdf) = s.pdf else {
+                panic!("{:?}", s.pdf)
+            };
+            assert!(
+                (pdf - expected).abs() < 1e-4 * expected,
+                "{pick}: {pdf} {expected}"
+            );
+            assert!((light.pdf_li(p, member, q) - pdf).abs() < 1e-4 * pdf);
+            assert_eq!(s.radiance, Rgb::splat(if member == 0 { 1.0 } else { 3.0 }));
+        }
+        assert_eq!(light.pdf_li(p, 2, Vec3::new(5.5, 2.0, 0.0)), 0.0);
+    }
+}
