@@ -7,7 +7,7 @@ use super::*;
 /// edges and emitting direction.
 fn rectangle(dim_x: Vec3, dim_y: Vec3, direction: Vec3) -> RectLight {
     let area = SceneLight::Area {
-        radiance: Rgb::splat(1.0),
+        radiance: Rgb::new(0.5, 2.0, 4.0),
         center: Vec3::ZERO,
         direction,
         dim_x,
@@ -53,8 +53,9 @@ fn a_file_that_contradicts_itself_keeps_its_stated_direction() {
 /// distribution and whether it lies at infinity.
 fn every_kind() -> Vec<(Light, &'static str, bool, bool)> {
     use crate::environment::{EnvironmentLight, EnvironmentMap, EnvironmentSampling};
-    let grey = Rgb::splat(1.0);
-    let map = EnvironmentMap::from_fn("grey", 8, 4, |_| grey).unwrap();
+    // Colours, not 1: a power's `* L` made `/ L` must show.
+    let colour = Rgb::new(0.5, 2.0, 4.0);
+    let map = EnvironmentMap::from_fn("grey", 8, 4, |_| Rgb::splat(1.0)).unwrap();
     let triangle = {
         let mut scene = crate::scene::builtin::cornell_box();
         scene.lights.clear();
@@ -70,7 +71,7 @@ fn every_kind() -> Vec<(Light, &'static str, bool, bool)> {
         ),
         (
             Light::Point(PointLight {
-                intensity: grey,
+                intensity: colour,
                 position: Vec3::ZERO,
                 convention: LightConvention::Physical,
             }),
@@ -80,7 +81,7 @@ fn every_kind() -> Vec<(Light, &'static str, bool, bool)> {
         ),
         (
             Light::Spot(SpotLight {
-                intensity: grey,
+                intensity: colour,
                 position: Vec3::ZERO,
                 direction: Vec3::NEG_Y,
             }),
@@ -90,7 +91,7 @@ fn every_kind() -> Vec<(Light, &'static str, bool, bool)> {
         ),
         (
             Light::Directional(DirectionalLight {
-                radiance: grey,
+                radiance: colour,
                 direction: Vec3::Y,
             }),
             "directional",
@@ -98,7 +99,7 @@ fn every_kind() -> Vec<(Light, &'static str, bool, bool)> {
             true,
         ),
         (
-            Light::Sky(AmbientSky { radiance: grey }),
+            Light::Sky(AmbientSky { radiance: colour }),
             "ambient",
             false,
             true,
@@ -242,9 +243,10 @@ fn each_kind_of_light_has_the_power_of_its_formula() {
         assert!(close(power, expected), "{kind}: {power} against {expected}");
     }
     // Numbers, not only the formulas above restated: a unit square of
-    // radiance 1 emits pi.
+    // radiance (0.5, 2, 4) emits pi times that.
     let square = rectangle(Vec3::X, Vec3::Z, Vec3::NEG_Y);
-    assert!((square.power() - Rgb::splat(PI)).abs().max_element() < 1e-6);
+    let expected = Rgb::new(0.5, 2.0, 4.0) * PI;
+    assert!((square.power() - expected).abs().max_element() < 1e-5);
 }
 
 #[test]
