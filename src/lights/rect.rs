@@ -66,10 +66,9 @@ impl RectLight {
     /// [`Self::sample_li`] for a rectangle that emits from its back too
     /// when `two_sided` (the catalogue's `light-from-behind` mistake).
     pub fn sample_sided(&self, p: Vec3, u: Vec2, two_sided: bool) -> Option<LightSample> {
+        // A light of no area (or a NaN one) gives an infinite or NaN
+        // density, which `seen_from` refuses: no sample.
         let area = self.area();
-        if area.is_nan() || area <= 0.0 {
-            return None;
-        }
         let q = self.center + (u.x - 0.5) * self.dim_x + (u.y - 0.5) * self.dim_y;
         let point = SurfacePoint {
             q,
@@ -172,6 +171,27 @@ mod tests {
         let square = facing_up(Vec3::ZERO, Vec3::X, Vec3::Z);
         assert!((square.diagonal() - 2f32.sqrt()).abs() < 1e-6);
         assert!((sheared.area() - 2.0).abs() < 1e-6);
+    }
+
+    // `u` runs along the edges: `q = center + (u.x - 1/2) dim_x + (u.y -
+    // 1/2) dim_y`, so `u = (0, 0)` is the corner `center - (dim_x + dim_y)
+    // / 2` (a sign flipped in either term would sample the same
+    // distribution, mirrored: only this catches it). A light without area
+    // gives no sample.
+    #[test]
+    fn the_sample_point_runs_along_the_edges_from_the_lower_corner() {
+        let light = facing_up(Vec3::new(0.0, -1.0, 0.0), Vec3::X * 2.0, Vec3::Z);
+        for (u, expected) in [
+            (Vec2::ZERO, Vec3::new(-1.0, -1.0, -0.5)),
+            (Vec2::new(1.0, 0.0), Vec3::new(1.0, -1.0, -0.5)),
+            (Vec2::new(0.25, 1.0), Vec3::new(-0.5, -1.0, 0.5)),
+        ] {
+            let s = light.sample_li(Vec3::ZERO, u).unwrap();
+            let q = s.wi * s.distance;
+            assert!((q - expected).length() < 1e-6, "{u}: {q}");
+        }
+        let flat = facing_up(Vec3::NEG_Y, Vec3::X, Vec3::X * 2.0);
+        assert_eq!(flat.sample_li(Vec3::ZERO, Vec2::splat(0.5)), None);
     }
 
     // A ray from one unit above the light's centre meets it at `t = 1`
