@@ -112,16 +112,12 @@ impl RectLight {
 
     /// Density per steradian with which [`Self::sample_li`] picks `wi` from `p`.
     pub fn pdf_li(&self, p: Vec3, wi: Vec3) -> f32 {
+        // A crossing has the light's cosine `-n . wi` positive and an area
+        // (`det = |dim_x x dim_y|^2` is positive, or nothing is inside).
         let Some(t) = self.crossing(p, wi) else {
             return 0.0;
         };
-        let area = self.area();
-        let cos_light = -self.normal.dot(wi);
-        if area > 0.0 && cos_light > 0.0 {
-            t * t / (area * cos_light)
-        } else {
-            0.0
-        }
+        t * t / (self.area() * -self.normal.dot(wi))
     }
 
     /// Radiance the light sends along a ray that meets it at distance `t`,
@@ -211,9 +207,11 @@ mod tests {
         assert_eq!(light.hit_distance(&ray(0.0, 1.0)), Some(1.0));
         assert_eq!(light.hit_distance(&ray(1.001, 2.0)), None);
         assert_eq!(light.hit_distance(&ray(0.0, 0.999)), None);
-        // From below, the light's back: nothing.
+        // From below, the light's back: nothing. From a point on the light
+        // itself (`t = 0`): nothing either.
         let below = Ray::new(Vec3::NEG_Y, Vec3::Y);
         assert_eq!(light.hit_distance(&below), None);
+        assert_eq!(light.crossing(Vec3::new(0.1, 0.0, 0.2), Vec3::NEG_Y), None);
     }
 
     // Where the ray crosses the plane decides: inside the parallelogram,
