@@ -58,9 +58,8 @@ impl SurfacePoint {
         let to_light = self.q - p;
         let distance_squared = to_light.length_squared();
         let distance = distance_squared.sqrt();
-        if distance.is_nan() || distance <= 0.0 {
-            return None;
-        }
+        // At zero distance `wi` is NaN, and so is the density, which
+        // `solid_angle_pdf` refuses.
         let wi = to_light / distance;
         let pdf = self.solid_angle_pdf(wi, distance_squared)?;
         Some(LightSample {

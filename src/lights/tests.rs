@@ -64,7 +64,7 @@ fn every_kind() -> Vec<(Light, &'static str, bool, bool)> {
     };
     vec![
         (
-            Light::Rect(rectangle(Vec3::X, Vec3::Z, Vec3::NEG_Y)),
+            Light::Rect(rectangle(Vec3::X * 2.0, Vec3::Z * 1.5, Vec3::NEG_Y)),
             "area",
             false,
             false,
@@ -242,10 +242,10 @@ fn each_kind_of_light_has_the_power_of_its_formula() {
         };
         assert!(close(power, expected), "{kind}: {power} against {expected}");
     }
-    // Numbers, not only the formulas above restated: a unit square of
-    // radiance (0.5, 2, 4) emits pi times that.
-    let square = rectangle(Vec3::X, Vec3::Z, Vec3::NEG_Y);
-    let expected = Rgb::new(0.5, 2.0, 4.0) * PI;
+    // Numbers, not only the formulas above restated: a 2 x 1.5 rectangle
+    // of radiance (0.5, 2, 4) emits 3 pi times that.
+    let square = rectangle(Vec3::X * 2.0, Vec3::Z * 1.5, Vec3::NEG_Y);
+    let expected = Rgb::new(0.5, 2.0, 4.0) * 3.0 * PI;
     assert!((square.power() - expected).abs().max_element() < 1e-5);
 }
 
