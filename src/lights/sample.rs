@@ -76,8 +76,10 @@ impl SurfacePoint {
     pub fn solid_angle_pdf(&self, wi: Vec3, distance_squared: f32) -> Option<f32> {
         let facing = -self.normal.dot(wi);
         let cos_emitter = if self.two_sided { facing.abs() } else { facing };
+        // The back of a one-sided emitter (cosine below 0) gives a
+        // negative density, a grazing view (cosine 0) an infinite one.
         let pdf = self.area_pdf * distance_squared / cos_emitter;
-        (cos_emitter > 0.0 && pdf > 0.0 && pdf.is_finite()).then_some(pdf)
+        (pdf > 0.0 && pdf.is_finite()).then_some(pdf)
     }
 }
 

@@ -179,3 +179,49 @@ fn the_set_samples_the_lights_that_emit_and_lists_each_kind() {
     assert!(set.emissive_triangles().is_none());
     assert!(!set.has_unsampled_emitters());
 }
+
+// The rule asked for is the one used (`choice`), an environment joins the
+// lit lights at infinity, and an emissive sphere, which no light samples,
+// is reported. Fails if `choice` gives the default, `with_environment`
+// loses the set, or `has_unsampled_emitters` is always false.
+#[test]
+fn a_rule_an_environment_and_an_emissive_sphere_are_taken_into_account() {
+    use crate::environment::{EnvironmentLight, EnvironmentMap, EnvironmentSampling};
+    let scene = cornell_box();
+    let set = LightSet::new(&scene, LightConvention::Physical);
+    assert_eq!(set.choice(), &LightChoice::EveryLight);
+    let by_power = set.clone().with_choice(LightChoiceRule::ByPower);
+    assert!(matches!(by_power.choice(), LightChoice::ByPower(_)));
+
+    let map = EnvironmentMap::from_fn("sky", 8, 4, |d| Rgb::splat(1.0 + d.y)).unwrap();
+    let lit =
+        by_power.with_environment(EnvironmentLight::new(map, EnvironmentSampling::Importance));
+    assert_eq!(lit.lights.len(), 2);
+    assert_eq!(lit.lit().map(|(i, _)| i).collect::<Vec<_>>(), vec![0, 1]);
+    assert_eq!(
+        lit.infinite()
+            .map(|(i, l)| (i, l.kind()))
+            .collect::<Vec<_>>(),
+        vec![(1, "environment")]
+    );
+    assert!(
+        matches!(lit.choice(), LightChoice::ByPower(_)),
+        "the rule is kept"
+    );
+
+    assert!(!set.has_unsampled_emitters());
+    let mut glowing = scene.clone();
+    glowing.materials.push(Material::Emission {
+        radiance: Rgb::splat(2.0),
+    });
+    glowing.spheres.push(crate::scene::Sphere {
+        center: Vec3::new(0.0, 0.5, 0.0),
+        radius: 0.1,
+        material: (glowing.materials.len() - 1) as u32,
+    });
+    let with_sphere = LightSet::new(&glowing, LightConvention::Physical);
+    assert!(with_sphere.has_unsampled_emitters());
+    // Primitives are the triangles, then the spheres: the new one is last.
+    let sphere = (glowing.mesh.triangles.len() + glowing.spheres.len() - 1) as u32;
+    assert_eq!(with_sphere.role(sphere), EmitterRole::Unsampled);
+}
