@@ -157,6 +157,22 @@ mod tests {
         assert!(shows_after(|q, _, diag| q.normalize() * 0.54 * diag));
     }
 
+    // A quad that emits nothing shows no lamp, wherever it lies: it is a
+    // surface like any other. Fails if the radiance guard is dropped.
+    #[test]
+    fn a_black_quad_on_its_lamp_does_not_stand_in_for_it() {
+        let mut scene = cornell_box();
+        for m in &mut scene.materials {
+            if let Material::Emission { radiance } = m {
+                *radiance = Rgb::ZERO;
+            }
+        }
+        let stand_ins = StandIns::of(&scene);
+        assert_eq!(stand_ins.lights, vec![false]);
+        assert!(stand_ins.materials.iter().all(|&m| !m));
+        assert!(stand_ins.triangle_light.iter().all(Option::is_none));
+    }
+
     #[test]
     fn a_quad_too_far_behind_in_front_or_too_large_does_not() {
         assert!(!shows_after(|q, d, diag| q - 0.011 * diag * d));
