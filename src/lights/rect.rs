@@ -30,6 +30,12 @@ use super::{LightConvention, LightSample, SurfacePoint};
 use crate::intersect::Ray;
 use crate::math::Rgb;
 
+/// The longer diagonal of the parallelogram with edges `a` and `b`:
+/// `max(|a + b|, |a - b|)` (a rectangle's two are equal).
+pub fn longer_diagonal(a: Vec3, b: Vec3) -> f32 {
+    (a + b).length().max((a - b).length())
+}
+
 /// A one-sided rectangular area light.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RectLight {
@@ -52,9 +58,7 @@ impl RectLight {
 
     /// The longer diagonal of the rectangle.
     pub fn diagonal(&self) -> f32 {
-        (self.dim_x + self.dim_y)
-            .length()
-            .max((self.dim_x - self.dim_y).length())
+        longer_diagonal(self.dim_x, self.dim_y)
     }
 
     /// A point uniform on the rectangle, seen from `p`.

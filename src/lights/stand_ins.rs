@@ -94,7 +94,7 @@ fn shows(scene: &Scene, corners: &[u32; 3], light: &SceneLight) -> bool {
     else {
         return false;
     };
-    let diagonal = (dim_x + dim_y).length().max((dim_x - dim_y).length());
+    let diagonal = crate::lights::rect::longer_diagonal(dim_x, dim_y);
     corners.iter().all(|&v| {
         let q = scene.mesh.positions[v as usize] - center;
         let in_front = q.dot(direction);
@@ -113,7 +113,21 @@ mod tests {
     /// diagonal and along its emitting direction: what `StandIns::of`
     /// says of it (does the quad show the light?).
     fn shows_after(moved: impl Fn(Vec3, Vec3, f32) -> Vec3) -> bool {
+        // The box twice its size: its lamp's diagonal is 1, where a bound's
+        // `* diagonal` made `/ diagonal` would not show.
         let mut scene = cornell_box();
+        for p in &mut scene.mesh.positions {
+            *p *= 2.0;
+        }
+        if let SceneLight::Area {
+            center,
+            dim_x,
+            dim_y,
+            ..
+        } = &mut scene.lights[0]
+        {
+            (*center, *dim_x, *dim_y) = (*center * 2.0, *dim_x * 2.0, *dim_y * 2.0);
+        }
         let SceneLight::Area {
             center,
             direction,
@@ -124,7 +138,7 @@ mod tests {
         else {
             unreachable!("the box's light is an area light")
         };
-        let diagonal = (dim_x + dim_y).length().max((dim_x - dim_y).length());
+        let diagonal = crate::lights::rect::longer_diagonal(dim_x, dim_y);
         let mut quad = Vec::new();
         for (t, &m) in scene.mesh.triangles.iter().zip(&scene.mesh.materials) {
             if matches!(scene.materials[m as usize], Material::Emission { .. }) {
