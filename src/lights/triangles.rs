@@ -202,7 +202,7 @@ mod tests {
         let expected = 2.0 * std::f32::consts::PI * 0.5 * (1.0 + 3.0);
         assert!((light.power() - Rgb::splat(expected)).abs().max_element() < 1e-5);
         let none = EmissiveTriangles::new(&scene, &[false; 4]);
-        assert!(none.is_empty() && none.len() == 0);
+        assert_eq!((none.len(), none.is_empty()), (0, true));
         assert_eq!(none.sample_li(Vec3::ZERO, 0.5, Vec2::splat(0.5)), None);
     }
 
