@@ -119,26 +119,19 @@ mod tests {
         for p in &mut scene.mesh.positions {
             *p *= 2.0;
         }
-        if let SceneLight::Area {
-            center,
-            dim_x,
-            dim_y,
-            ..
-        } = &mut scene.lights[0]
-        {
-            (*center, *dim_x, *dim_y) = (*center * 2.0, *dim_x * 2.0, *dim_y * 2.0);
-        }
         let SceneLight::Area {
             center,
             direction,
             dim_x,
             dim_y,
             ..
-        } = scene.lights[0]
+        } = &mut scene.lights[0]
         else {
             unreachable!("the box's light is an area light")
         };
-        let diagonal = crate::lights::rect::longer_diagonal(dim_x, dim_y);
+        (*center, *dim_x, *dim_y) = (*center * 2.0, *dim_x * 2.0, *dim_y * 2.0);
+        let diagonal = crate::lights::rect::longer_diagonal(*dim_x, *dim_y);
+        let (center, direction) = (*center, *direction);
         let mut quad = Vec::new();
         for (t, &m) in scene.mesh.triangles.iter().zip(&scene.mesh.materials) {
             if matches!(scene.materials[m as usize], Material::Emission { .. }) {
@@ -190,6 +183,8 @@ mod tests {
     #[test]
     fn a_quad_too_far_behind_in_front_or_too_large_does_not() {
         assert!(!shows_after(|q, d, diag| q - 0.011 * diag * d));
+        // 0.5 % of the diagonal towards the room: it would shadow the lamp.
+        assert!(!shows_after(|q, d, diag| q + 0.005 * diag * d));
         assert!(!shows_after(|q, d, diag| q + 2e-4 * diag * d));
         assert!(!shows_after(|q, _, diag| q.normalize() * 0.56 * diag));
     }
