@@ -156,3 +156,6 @@ impl Layout {
         (len < end).then(|| format!("the file is truncated at byte {len} of {end}"))
     }
 }
+
+#[cfg(test)]
+mod tests;
