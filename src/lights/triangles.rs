@@ -207,7 +207,8 @@ mod tests {
     }
 
     // Picks in proportion to power, 1 : 3 here: `pick` below 1/4 takes
-    // the first, above it the second. The density of a sample, queried
+    // the first, above it the second (and a pick rounded up to 1, the
+    // last, not one past it). The density of a sample, queried
     // where it lands, is the sample's own: `(P_i / P) r^2 / (A_i cos)`.
     // Fails if the pick, the point or the density's pieces change, or an
     // unknown member gets a density.
@@ -216,7 +217,7 @@ mod tests {
         let (scene, sampled) = scene();
         let light = EmissiveTriangles::new(&scene, &sampled);
         let p = Vec3::new(1.0, 0.0, 0.5);
-        for (pick, member) in [(0.2, 0u32), (0.3, 1)] {
+        for (pick, member) in [(0.2, 0u32), (0.3, 1), (1.0, 1)] {
             let u = Vec2::new(0.4, 0.7);
             let s = light.sample_li(p, pick, u).unwrap();
             let q = p + s.wi * s.distance;
