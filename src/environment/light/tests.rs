@@ -108,3 +108,18 @@ fn a_constant_map_is_sampled_uniformly_over_the_sphere() {
         }
     }
 }
+
+/// A sample at a pole (`u.y = 0` on a map whose top row has light) has no
+/// density per steradian (`sin(theta) = 0`): no sample, not one of
+/// density 0. Uniform sampling has a density there.
+#[test]
+fn a_sample_at_a_pole_is_none() {
+    let map = EnvironmentMap::new("constant", 16, 8, vec![Rgb::splat(3.0); 16 * 8]).unwrap();
+    let light = EnvironmentLight::new(map, EnvironmentSampling::Importance);
+    assert_eq!(light.sample_li(Vec2::new(0.3, 0.0)), None);
+    let inside = light.sample_li(Vec2::new(0.3, 0.01)).unwrap();
+    assert!(matches!(inside.pdf, LightPdf::SolidAngle(p) if p > 0.0));
+    let uniform = light.with_sampling(EnvironmentSampling::Uniform);
+    let s = uniform.sample_li(Vec2::new(0.3, 0.0)).unwrap();
+    assert_eq!(s.pdf, LightPdf::SolidAngle(1.0 / (4.0 * PI)));
+}
