@@ -282,6 +282,24 @@ mod tests {
         }
     }
 
+    /// `from_fn`'s texel `(i, j)` is the radiance of the direction
+    /// through its cell's centre, computed as `uv_to_direction` computes
+    /// it (compared exactly); the map keeps its name for messages.
+    #[test]
+    fn a_map_from_a_function_samples_it_at_the_cells_centres() {
+        let radiance = |d: Vec3| Rgb::new(d.x + 1.0, d.y + 1.0, d.z + 1.0);
+        let map = EnvironmentMap::from_fn("gradient", 16, 8, radiance).unwrap();
+        for j in 0..8 {
+            for i in 0..16 {
+                let centre = Vec2::new((i as f32 + 0.5) / 16.0, (j as f32 + 0.5) / 8.0);
+                let expected = radiance(uv_to_direction(centre));
+                assert_eq!(map.texel(i, j), expected, "texel ({i}, {j})");
+            }
+        }
+        assert_eq!(map.source(), "gradient");
+        assert_eq!(format!("{map:?}"), "EnvironmentMap(gradient, 16 x 8)");
+    }
+
     #[test]
     fn bad_maps_are_refused_with_the_reason() {
         let err = EnvironmentMap::new("m.exr", 3, 2, vec![Rgb::ONE; 6]).unwrap_err();
