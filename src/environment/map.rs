@@ -300,6 +300,26 @@ mod tests {
         assert_eq!(format!("{map:?}"), "EnvironmentMap(gradient, 16 x 8)");
     }
 
+    /// The cell average is the texels under the kernel `[1 6 1] / 8` in
+    /// each direction: a texel of 64 gives its own cell 36, its side
+    /// neighbours 6, its diagonal ones 1; columns wrap around, rows clamp
+    /// (the row above the top is the top row again).
+    #[test]
+    fn the_cell_average_is_the_bilinear_lookups_kernel() {
+        let mut texels = vec![Rgb::ZERO; 16 * 8];
+        texels[3 * 16] = Rgb::new(64.0, 128.0, 0.0);
+        texels[5] = Rgb::splat(64.0);
+        let map = EnvironmentMap::new("two texels", 16, 8, texels).unwrap();
+        let red = |i: usize, j: usize| map.cell_average(i, j).x;
+        assert_eq!(map.cell_average(0, 3), Rgb::new(36.0, 72.0, 0.0));
+        assert_eq!([red(1, 3), red(15, 3), red(0, 2), red(0, 4)], [6.0; 4]);
+        assert_eq!([red(1, 2), red(15, 4)], [1.0; 2]);
+        assert_eq!([red(2, 3), red(0, 5), red(14, 3)], [0.0; 3]);
+        // Texel (5, 0) on the top row: its cell counts it 6 + 1 times down
+        // the column, the row below once.
+        assert_eq!([red(5, 0), red(4, 0), red(5, 1)], [42.0, 7.0, 6.0]);
+    }
+
     #[test]
     fn bad_maps_are_refused_with_the_reason() {
         let err = EnvironmentMap::new("m.exr", 3, 2, vec![Rgb::ONE; 6]).unwrap_err();

@@ -80,6 +80,9 @@ fn texel_weights_are_the_handouts_pdf_envmap() {
     assert!(ours.escaped_radiance(centre(5.6, 3.0)).x > 0.0);
     assert!(ours.pdf_li(centre(6.0, 3.0)) > 0.0);
     assert!(ours.pdf_li(centre(5.0, 3.0)) < bright);
+    // In one row, the default density follows the cell averages, 6 : 36.
+    let ratio = ours.pdf_li(centre(6.0, 3.0)) / ours.pdf_li(centre(5.0, 3.0));
+    assert!((ratio - 1.0 / 6.0).abs() < 1e-5, "{ratio}");
     // The same tables are kept when the weights do not change.
     let again = course.reweighted(EnvironmentWeights::Texel);
     assert!(Arc::ptr_eq(&again.tables, &course.tables));
