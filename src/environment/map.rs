@@ -329,6 +329,15 @@ mod tests {
         let err = EnvironmentMap::new("m.exr", 4, 2, texels.clone()).unwrap_err();
         assert!(err.problem.contains("(1, 1)"), "{err}");
         texels[5] = Rgb::new(1.0, -0.5, 0.0);
-        assert!(EnvironmentMap::new("m.exr", 4, 2, texels).is_err());
+        assert!(EnvironmentMap::new("m.exr", 4, 2, texels.clone()).is_err());
+        // MAX_RADIANCE itself is radiance; the next float up is not.
+        texels[5] = Rgb::new(1.0, MAX_RADIANCE, 0.0);
+        assert!(EnvironmentMap::new("m.exr", 4, 2, texels.clone()).is_ok());
+        texels[5].y = MAX_RADIANCE.next_up();
+        let err = EnvironmentMap::new("m.exr", 4, 2, texels).unwrap_err();
+        assert!(
+            err.problem.contains("(1, 1)") && err.problem.contains("too bright"),
+            "{err}"
+        );
     }
 }

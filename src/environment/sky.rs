@@ -121,3 +121,99 @@ pub fn sky_radiance(d: Vec3) -> Rgb {
 pub fn builtin_sky() -> Result<EnvironmentMap, EnvironmentError> {
     Sky::default().map(BUILTIN_SKY, 256)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn close(a: Rgb, b: Rgb) -> bool {
+        (a - b).abs().max_element() <= 1e-5 * b.max_element().max(1.0)
+    }
+
+    /// The direction at `angle` from the sun, tilted towards the zenith.
+    fn off_sun(sky: &Sky, angle: f32) -> Vec3 {
+        let up = (Vec3::Y - sky.sun * sky.sun.y).normalize();
+        sky.sun * angle.cos() + up * angle.sin()
+    }
+
+    /// 35 degrees above the horizon, 40 degrees from +Z towards +X.
+    #[test]
+    fn the_sun_stands_where_the_docs_say() {
+        let sun = sun_direction();
+        assert!((sun.length() - 1.0).abs() < 1e-6);
+        assert!((sun.y - 35f32.to_radians().sin()).abs() < 1e-6);
+        assert!((sun.x.atan2(sun.z) - 40f32.to_radians()).abs() < 1e-6);
+    }
+
+    /// The sky's colours by the docs' formula: the zenith and a horizon
+    /// far from the sun, the sun's glow `2 exp(-angle / 0.15)` on both,
+    /// the ground 3 degrees below the horizon and lower, and halfway
+    /// between the two in between.
+    #[test]
+    fn the_sky_is_blue_above_a_pale_horizon_and_the_ground_below() {
+        let sky = Sky::default();
+        let zenith = Rgb::new(0.18, 0.32, 0.75);
+        let horizon = Rgb::new(0.85, 0.9, 1.0);
+        let glow = |angle: f32| Rgb::new(1.0, 0.85, 0.6) * (2.0 * (-angle / 0.15).exp());
+        assert!(close(
+            sky.radiance(Vec3::Y),
+            zenith + glow(55f32.to_radians())
+        ));
+        let away = Vec3::new(-sky.sun.x, 0.0, -sky.sun.z).normalize();
+        let angle = 145f32.to_radians();
+        assert!(close(sky.radiance(away), horizon + glow(angle)));
+        // Halfway up, (1 - y)^3 of the way to the horizon.
+        let y = 0.5f32;
+        let halfway = (away * (1.0 - y * y).sqrt() + Vec3::Y * y).normalize();
+        let angle = halfway.dot(sky.sun).acos();
+        let expected = zenith.lerp(horizon, 0.125) + glow(angle);
+        assert!(close(sky.radiance(halfway), expected));
+        let below = 3f32.to_radians();
+        for depth in [below, 0.5, 1.5] {
+            let d = away * depth.cos() - Vec3::Y * depth.sin();
+            assert!(close(sky.radiance(d), sky.ground), "{depth}");
+        }
+        let d = away * (below / 2.0).cos() - Vec3::Y * (below / 2.0).sin();
+        let at_horizon = horizon + glow(d.dot(sky.sun).acos());
+        let expected = sky
+            .ground
+            .lerp(at_horizon, 1.0 - (below / 2.0).sin() / below.sin());
+        assert!(close(sky.radiance(d), expected), "{}", sky.radiance(d));
+    }
+
+    /// Inside the sun's disk the sun's warm white is added, outside only
+    /// the glow; a smaller sun keeps `radius^2 radiance`, the irradiance
+    /// it gives (`pi r^2 L`, 7.7 for the built-in sun).
+    #[test]
+    fn the_sun_is_a_disk_and_a_smaller_one_lights_as_much() {
+        let sky = Sky::default();
+        let disk = Rgb::new(1.0, 0.95, 0.85) * SUN_RADIANCE;
+        let inside = sky.radiance(off_sun(&sky, 0.9 * SUN_RADIUS));
+        let outside = sky.radiance(off_sun(&sky, 1.1 * SUN_RADIUS));
+        let difference = inside - outside - disk;
+        assert!(difference.abs().max_element() < 0.1, "{difference}");
+        let irradiance = std::f32::consts::PI * SUN_RADIUS * SUN_RADIUS * SUN_RADIANCE;
+        assert!((irradiance - 7.7).abs() < 0.01, "{irradiance}");
+        let small = sky.with_sun_radius(SUN_RADIUS / 8.0);
+        assert_eq!((small.sun, small.ground), (sky.sun, sky.ground));
+        assert_eq!(small.sun_radius, SUN_RADIUS / 8.0);
+        assert!((small.sun_radiance / (64.0 * SUN_RADIANCE) - 1.0).abs() < 1e-6);
+        assert!(small.radiance(off_sun(&small, 0.9 * small.sun_radius)).x > 64.0 * 1000.0);
+        assert!(small.radiance(off_sun(&small, 2.0 * small.sun_radius)).x < 3.0);
+    }
+
+    /// The map is `2 h x h` texels of the sky at their centres, named.
+    #[test]
+    fn the_map_is_the_sky_at_each_texels_centre() {
+        let sky = Sky::default();
+        let map = sky.map("sky test", 8).unwrap();
+        assert_eq!(
+            (map.width(), map.height(), map.source()),
+            (16, 8, "sky test")
+        );
+        let centre = super::super::map::uv_to_direction(glam::Vec2::new(3.5 / 16.0, 2.5 / 8.0));
+        assert_eq!(map.texel(3, 2), sky.radiance(centre));
+        assert_eq!(builtin_sky().unwrap().source(), BUILTIN_SKY);
+        assert_eq!(sky_radiance(Vec3::Y), sky.radiance(Vec3::Y));
+    }
+}
