@@ -178,6 +178,15 @@ fn the_chunk_that_starts_last_must_end_in_the_file() {
                 .as_str()
             )
         );
+        // Cut right after the table: whole, but no chunk follows it.
+        let table_only = &bytes[..table_at + 16];
+        assert_eq!(
+            layout.truncation(table_only),
+            Some(format!(
+                "the file ends early, at byte {}, before its last chunk of pixels (which starts at byte {last})",
+                table_only.len()
+            ))
+        );
         // Cut inside the last chunk's size: its end cannot be read.
         let early = &bytes[..last + before_size + 2];
         assert_eq!(
