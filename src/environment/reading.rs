@@ -126,8 +126,19 @@ fn check_size(width: u64, height: u64, bytes_per_texel: u64) -> Result<(), Strin
 /// Refuses `texels` (`what` they are) at `bytes_per_texel` that do not
 /// fit in the memory available.
 fn check_memory(what: &str, texels: u128, bytes_per_texel: u64) -> Result<(), String> {
+    check_memory_against(what, texels, bytes_per_texel, memory::available_bytes())
+}
+
+/// [`check_memory`] with `available` bytes, where known; where not,
+/// whether the allocation would succeed.
+fn check_memory_against(
+    what: &str,
+    texels: u128,
+    bytes_per_texel: u64,
+    available: Option<u64>,
+) -> Result<(), String> {
     let needed = texels * bytes_per_texel as u128;
-    let words = memory::shortfall(needed, memory::available_bytes()).or_else(|| {
+    let words = memory::shortfall(needed, available).or_else(|| {
         let cannot = needed > isize::MAX as u128
             || Vec::<u8>::new().try_reserve_exact(needed as usize).is_err();
         cannot.then(|| {
@@ -225,3 +236,6 @@ fn exr_problem(bytes: &[u8], text: &str) -> String {
     }
     format!("the OpenEXR decoder could not read it: {text}")
 }
+
+#[cfg(test)]
+mod tests;

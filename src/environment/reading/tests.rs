@@ -1,0 +1,78 @@
+//! The plain words for what the system and the first bytes say, and the
+//! memory check where the memory available is known and where it is not.
+
+use super::*;
+
+/// Each kind of read error in plain words, without the system's code.
+#[test]
+fn read_errors_are_said_in_plain_words() {
+    let file = Path::new("/nonexistent/map.exr");
+    let kind = |k: ErrorKind| io_problem(file, &std::io::Error::from(k));
+    assert_eq!(
+        kind(ErrorKind::NotFound),
+        "cannot open it: there is no such file"
+    );
+    assert_eq!(
+        kind(ErrorKind::PermissionDenied),
+        "cannot open it: permission denied"
+    );
+    assert_eq!(
+        kind(ErrorKind::OutOfMemory),
+        "cannot read it: the file is larger than the memory available"
+    );
+    for k in [ErrorKind::InvalidInput, ErrorKind::InvalidData] {
+        assert_eq!(
+            kind(k),
+            "cannot read it: it is not a file that can be read from start to end"
+        );
+    }
+    // A directory, whatever the error's kind says.
+    let dir = std::env::temp_dir();
+    for k in [ErrorKind::Other, ErrorKind::OutOfMemory] {
+        assert_eq!(
+            io_problem(&dir, &std::io::Error::from(k)),
+            "cannot open it: it is a directory, not a file"
+        );
+    }
+    // Others with the system's words, less its "(os error 5)".
+    let io = std::io::Error::from_raw_os_error(5);
+    assert!(io.to_string().contains("(os error 5)"), "{io}");
+    let words = io_problem(file, &io);
+    assert!(words.starts_with("cannot read it: "), "{words}");
+    assert!(!words.contains("os error") && words.len() > 20, "{words}");
+    let plain = std::io::Error::other("the disk is on fire");
+    assert_eq!(plain_io_message(&plain), "the disk is on fire");
+}
+
+/// Text with spaces, tabs and line ends is quoted as text; a byte
+/// outside printable ASCII makes it bytes.
+#[test]
+fn the_start_of_a_file_is_text_or_bytes() {
+    assert_eq!(
+        describe_start(b"P3\r\n\t1 2"),
+        "it begins with the text \"P3\\r\\n\\t1 2\""
+    );
+    assert_eq!(
+        describe_start(b"ab\x01cd"),
+        "it begins with the bytes 61 62 01 63 64"
+    );
+    assert_eq!(describe_start(b"GIF89a"), "it looks like a GIF image");
+}
+
+/// Known memory: a shortfall is said with both amounts. Unknown memory:
+/// what no allocation can hold is refused, past `isize::MAX` bytes and
+/// past `usize::MAX` (where a cast would wrap to a small size).
+#[test]
+fn memory_is_checked_where_known_and_where_not() {
+    let check = |texels: u128, available| check_memory_against("a map", texels, 12, available);
+    assert_eq!(check(100, Some(1200)), Ok(()));
+    assert_eq!(
+        check(101, Some(1200)),
+        Err("a map; reading it needs about 1.2 kB of memory and 1.2 kB is available (12 bytes a texel)".into())
+    );
+    assert_eq!(check(100, None), Ok(()));
+    for texels in [(1u128 << 64) / 12 + 1, (1u128 << 63) / 12 + 1] {
+        let err = check(texels, None).unwrap_err();
+        assert!(err.contains("which cannot be allocated"), "{texels}: {err}");
+    }
+}
