@@ -158,4 +158,4 @@ impl Layout {
 }
 
 #[cfg(test)]
-mod tests;
+pub(super) mod tests;

@@ -6,7 +6,7 @@ use super::*;
 
 /// The magic number and version 2 with `flags`, then `attributes` (name,
 /// type, value) and the header's closing NUL.
-fn header(flags: u32, attributes: &[(&str, &str, Vec<u8>)]) -> Vec<u8> {
+pub(in crate::environment) fn header(flags: u32, attributes: &[(&str, &str, Vec<u8>)]) -> Vec<u8> {
     let mut bytes = vec![0x76, 0x2f, 0x31, 0x01];
     bytes.extend((2 | flags).to_le_bytes());
     for (name, kind, value) in attributes {
@@ -21,7 +21,8 @@ fn header(flags: u32, attributes: &[(&str, &str, Vec<u8>)]) -> Vec<u8> {
     bytes
 }
 
-fn ints(values: &[i32]) -> Vec<u8> {
+/// The little-endian bytes of `values`.
+pub(in crate::environment) fn ints(values: &[i32]) -> Vec<u8> {
     values.iter().flat_map(|v| v.to_le_bytes()).collect()
 }
 

@@ -76,3 +76,58 @@ fn memory_is_checked_where_known_and_where_not() {
         assert!(err.contains("which cannot be allocated"), "{texels}: {err}");
     }
 }
+
+/// An OpenEXR file whose display window is small but whose data window
+/// needs more memory than any machine has is refused before decoding,
+/// by the data window's size. Its one chunk is whole, so the check is
+/// the memory's.
+#[test]
+fn a_huge_data_window_is_refused_before_decoding() {
+    use super::super::exr_layout::tests::{header, ints};
+    let mut bytes = header(
+        0,
+        &[
+            ("dataWindow", "box2i", ints(&[0, 0, 1_999_999, 999_999])),
+            ("displayWindow", "box2i", ints(&[0, 0, 15, 7])),
+            ("compression", "compression", vec![0]),
+            ("chunkCount", "int", ints(&[1])),
+        ],
+    );
+    let chunk = bytes.len() as u64 + 8;
+    bytes.extend(chunk.to_le_bytes());
+    bytes.extend(ints(&[0, 0]));
+    let err = read_openexr(&bytes).unwrap_err();
+    let what = "its data window is 2000000 x 1000000 texels; reading it needs";
+    assert!(err.starts_with(what) && err.contains("24.0 TB"), "{err}");
+}
+
+/// The OpenEXR decoder's complaints in plain words where they are known.
+#[test]
+fn the_decoders_complaints_are_said_in_plain_words() {
+    let bytes = [0u8; 42];
+    for text in ["failed to fill whole buffer", "Unexpected End of file"] {
+        assert_eq!(
+            exr_problem(&bytes, text),
+            "the file ends early, at byte 42, before its last pixels"
+        );
+    }
+    assert_eq!(
+        exr_problem(
+            &bytes,
+            "Format error OpenExr: non-deep rgb channels missing"
+        ),
+        "the OpenEXR image has no R, G and B channels (or only deep ones)"
+    );
+    assert_eq!(
+        exr_problem(&bytes, "OpenExr: invalid: chunk offset"),
+        "the OpenEXR decoder could not read it, it found invalid chunk offset"
+    );
+    assert_eq!(
+        exr_problem(&bytes, "not supported: deep data"),
+        "the OpenEXR decoder could not read it, it does not support deep data"
+    );
+    assert_eq!(
+        exr_problem(&bytes, "something new"),
+        "the OpenEXR decoder could not read it: something new"
+    );
+}
