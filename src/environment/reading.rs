@@ -20,7 +20,7 @@ use std::io::{Cursor, ErrorKind};
 use std::path::Path;
 
 use image::codecs::openexr::OpenExrDecoder;
-use image::{DynamicImage, ImageDecoder, Limits};
+use image::{DynamicImage, ImageDecoder};
 
 use super::radiance::{self, Problem};
 use super::{EnvironmentError, EnvironmentMap};
@@ -192,15 +192,10 @@ fn read_openexr(bytes: &[u8]) -> Result<(usize, usize, Vec<Rgb>), String> {
             MAP_BYTES_PER_TEXEL,
         )?;
     }
-    let mut decoder = OpenExrDecoder::with_alpha_preference(Cursor::new(bytes), Some(false))
+    let decoder = OpenExrDecoder::with_alpha_preference(Cursor::new(bytes), Some(false))
         .map_err(|e| exr_problem(bytes, &e.to_string()))?;
     let (width, height) = decoder.dimensions();
     check_size(width as u64, height as u64, EXR_BYTES_PER_TEXEL)?;
-    let mut limits = Limits::no_limits();
-    limits.max_alloc = Some(width as u64 * height as u64 * EXR_BYTES_PER_TEXEL);
-    decoder
-        .set_limits(limits)
-        .map_err(|e| exr_problem(bytes, &e.to_string()))?;
     let image = DynamicImage::from_decoder(decoder)
         .map_err(|e| exr_problem(bytes, &e.to_string()))?
         .into_rgb32f();
