@@ -315,8 +315,9 @@ mod tests {
         assert_eq!([red(1, 3), red(15, 3), red(0, 2), red(0, 4)], [6.0; 4]);
         assert_eq!([red(1, 2), red(15, 4)], [1.0; 2]);
         assert_eq!([red(2, 3), red(0, 5), red(14, 3)], [0.0; 3]);
-        // Texel (5, 0) on the top row: its cell counts it 6 + 1 times down
-        // the column, the row below once.
+        // Texel (5, 0) on the top row: the row above is the top row again,
+        // so its own cell weighs it (6 + 1) 6 = 42, the cell beside it
+        // (6 + 1) 1 = 7, the cell below 6.
         assert_eq!([red(5, 0), red(4, 0), red(5, 1)], [42.0, 7.0, 6.0]);
     }
 
@@ -333,7 +334,7 @@ mod tests {
         // MAX_RADIANCE itself is radiance; the next float up is not.
         texels[5] = Rgb::new(1.0, MAX_RADIANCE, 0.0);
         assert!(EnvironmentMap::new("m.exr", 4, 2, texels.clone()).is_ok());
-        texels[5].y = MAX_RADIANCE.next_up();
+        texels[5].y = f32::from_bits(MAX_RADIANCE.to_bits() + 1);
         let err = EnvironmentMap::new("m.exr", 4, 2, texels).unwrap_err();
         assert!(
             err.problem.contains("(1, 1)") && err.problem.contains("too bright"),

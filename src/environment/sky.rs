@@ -192,12 +192,17 @@ mod tests {
         let outside = sky.radiance(off_sun(&sky, 1.1 * SUN_RADIUS));
         let difference = inside - outside - disk;
         assert!(difference.abs().max_element() < 0.1, "{difference}");
-        let irradiance = std::f32::consts::PI * SUN_RADIUS * SUN_RADIUS * SUN_RADIANCE;
-        assert!((irradiance - 7.7).abs() < 0.01, "{irradiance}");
+        let irradiance = |s: &Sky| std::f32::consts::PI * s.sun_radius.powi(2) * s.sun_radiance;
+        assert!(
+            (irradiance(&sky) - 7.7).abs() < 0.01,
+            "{}",
+            irradiance(&sky)
+        );
         let small = sky.with_sun_radius(SUN_RADIUS / 8.0);
         assert_eq!((small.sun, small.ground), (sky.sun, sky.ground));
         assert_eq!(small.sun_radius, SUN_RADIUS / 8.0);
         assert!((small.sun_radiance / (64.0 * SUN_RADIANCE) - 1.0).abs() < 1e-6);
+        assert!((irradiance(&small) / irradiance(&sky) - 1.0).abs() < 1e-5);
         assert!(small.radiance(off_sun(&small, 0.9 * small.sun_radius)).x > 64.0 * 1000.0);
         assert!(small.radiance(off_sun(&small, 2.0 * small.sun_radius)).x < 3.0);
     }

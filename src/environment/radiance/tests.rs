@@ -214,8 +214,9 @@ fn only_scanlines_of_8_to_32767_texels_are_new_style() {
             assert_eq!(rgb[0], rgbe_to_rgb([2, 2, 0, 7]));
             assert_eq!(rgb[6], Rgb::splat(5.5));
         } else {
-            // Read as encoded, the bytes 5 5 5 136 5 are a literal of
-            // five, and the next 5 runs past the eighth texel.
+            // Read as encoded, the byte 5 is a literal of the five bytes
+            // 5 5 136 5 5 after it, and the next 5 (5 + 5 > 8) runs past
+            // the eighth texel.
             let err = result.unwrap_err();
             assert!(
                 matches!(&err, Problem::Other(t) if t.contains("past the end of its scanline")),
