@@ -140,4 +140,19 @@ mod tests {
         assert!(unit.contains(&Aabb::EMPTY));
         assert_eq!(unit.surface_area(), 6.0);
     }
+
+    /// Areas and unions of boxes whose sides differ: `2 (1 2 + 2 3 + 3 1)`
+    /// for a 1 x 2 x 3 box; the union spans both boxes, the empty box
+    /// changes nothing.
+    #[test]
+    fn a_box_of_unequal_sides_has_its_area_and_a_union_spans_both() {
+        let a = Aabb::from_points([Vec3::new(-1.0, 0.0, 2.0), Vec3::new(0.0, 2.0, 5.0)]);
+        assert_eq!(a.surface_area(), 22.0);
+        let b = Aabb::from_points([Vec3::new(3.0, -4.0, 1.0), Vec3::new(4.0, -3.0, 2.0)]);
+        let both = a.union(b);
+        assert_eq!(both.min, Vec3::new(-1.0, -4.0, 1.0));
+        assert_eq!(both.max, Vec3::new(4.0, 2.0, 5.0));
+        assert_eq!(a.union(Aabb::EMPTY), a);
+        assert_eq!(Aabb::EMPTY.union(b), b);
+    }
 }
