@@ -124,7 +124,9 @@ pub fn builtin_sky() -> Result<EnvironmentMap, EnvironmentError> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::map::uv_to_direction;
     use super::*;
+    use glam::Vec2;
 
     fn close(a: Rgb, b: Rgb) -> bool {
         (a - b).abs().max_element() <= 1e-5 * b.max_element().max(1.0)
@@ -216,7 +218,7 @@ mod tests {
             (map.width(), map.height(), map.source()),
             (16, 8, "sky test")
         );
-        let centre = super::super::map::uv_to_direction(glam::Vec2::new(3.5 / 16.0, 2.5 / 8.0));
+        let centre = uv_to_direction(Vec2::new(3.5 / 16.0, 2.5 / 8.0));
         assert_eq!(map.texel(3, 2), sky.radiance(centre));
         assert_eq!(builtin_sky().unwrap().source(), BUILTIN_SKY);
         assert_eq!(sky_radiance(Vec3::Y), sky.radiance(Vec3::Y));

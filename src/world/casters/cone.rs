@@ -9,8 +9,9 @@
 //! sphere of radius `r` whose centre is at `a` from the point, that bound
 //! is `r^2` (widened, `(r + EDGE_ANGLE |a|)^2`), and the test needs no
 //! square root and no cosine (which, for a small sphere far away, agrees
-//! with `cos(theta_max)` to all of `f32`'s digits). Uniform in the cone, the density is
-//! `1 / (2 pi (1 - cos(theta_max)))` (pbrt-v4, section 6.2.4).
+//! with `cos(theta_max)` to all of `f32`'s digits). Uniform in the cone,
+//! the density is `1 / (2 pi (1 - cos(theta_max)))` (pbrt-v4, section
+//! 6.2.4).
 
 use glam::{Vec2, Vec3};
 
