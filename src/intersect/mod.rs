@@ -78,3 +78,44 @@ impl<T: Intersector + ?Sized> Intersector for &T {
         (**self).occluded(ray)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::builtin;
+    use glam::Vec3;
+
+    /// Each method of `&T`'s impl asked through the generic code that takes
+    /// `impl Intersector` (as `World::new(scene, &bvh)` does).
+    fn answers(
+        intersector: impl Intersector,
+        ray: &Ray,
+    ) -> (*const Primitives, Option<PrimitiveHit>, Option<Hit>, bool) {
+        let primitives: *const Primitives = intersector.primitives();
+        let nearest = intersector.nearest(ray);
+        let hit = intersector.intersect(ray);
+        (primitives, nearest, hit, intersector.occluded(ray))
+    }
+
+    /// A reference answers as the intersector it points to: the same
+    /// primitives (not a default set) and the same hit. Each forwarding
+    /// method made to return a default (a leaked empty `Primitives`, `None`,
+    /// `false`) fails here; checked by hand for `primitives` and `nearest`,
+    /// the two a mutation run found untested.
+    #[test]
+    fn a_reference_to_an_intersector_forwards_every_question() {
+        let primitives = Primitives::from_scene(&builtin::cornell_box());
+        let scan = LinearScan::new(&primitives);
+        let ray = Ray::new(Vec3::new(0.0, 1.0, 3.0), Vec3::new(0.0, 0.0, -1.0));
+        let (own_primitives, own_nearest, own_hit, own_occluded) = answers(&scan, &ray);
+        assert!(own_nearest.is_some() && own_hit.is_some() && own_occluded);
+        let direct = (
+            scan.primitives() as *const Primitives,
+            scan.nearest(&ray),
+            scan.intersect(&ray),
+            scan.occluded(&ray),
+        );
+        assert_eq!((own_primitives, own_nearest, own_hit, own_occluded), direct);
+        assert!(std::ptr::eq(own_primitives, &primitives));
+    }
+}
