@@ -14,7 +14,7 @@ mod common;
 
 use common::*;
 use glam::Vec3;
-use pathtracer::intersect::{Intersector, LinearScan, Primitives, Ray};
+use pathtracer::intersect::{Hit, Intersector, LinearScan, Primitives, Ray};
 use proptest::prelude::*;
 
 /// `10^x`.
@@ -91,6 +91,28 @@ fn check_left_sphere(
     );
 }
 
+/// The spawned origin moves off the hit point by the error bound along the
+/// normal and no further: on each axis by at most `d |ng_i|` with
+/// `d = |ng| . p_error`, plus the rounding of `p + offset` and the one
+/// step to the next float away from the surface (each at most
+/// `2^-23 |p_i + offset_i|`, so `2^-21 (|p_i| + d)` covers both). An origin
+/// pushed further could step past a neighbouring surface. Checked by hand:
+/// `offset_origin`'s `d * ng` made `d / ng`, which moves the origin by
+/// `d / ng_i` (unbounded as `ng_i` goes to 0, infinite on an axis-aligned
+/// triangle) but to the right side, so no re-hit test saw it, fails here.
+fn assert_origin_near_the_hit(hit: &Hit, ray: &Ray) {
+    let d = f64::from(hit.ng.abs().dot(hit.p_error));
+    let (p, o, ng) = (hit.p.as_dvec3(), ray.origin.as_dvec3(), hit.ng.as_dvec3());
+    for axis in 0..3 {
+        let bound = d * ng[axis].abs() * (1.0 + 1e-6) + 2f64.powi(-21) * (p[axis].abs() + d);
+        assert!(
+            (o[axis] - p[axis]).abs() <= bound,
+            "origin moved {} on axis {axis}, bound {bound}: {hit:?} {ray:?}",
+            o[axis] - p[axis]
+        );
+    }
+}
+
 proptest! {
     #![proptest_config(cases(1000))]
 
@@ -119,6 +141,7 @@ proptest! {
 
         let scan = LinearScan::new(&prims);
         for ray in [hit.spawn_ray(wi), hit.spawn_ray_to(place(target))] {
+            assert_origin_near_the_hit(&hit, &ray);
             prop_assert!(scan.intersect(&ray).is_none(), "re-hit from {hit:?} along {ray:?}");
             prop_assert!(!scan.occluded(&ray), "self-occluded from {hit:?} along {ray:?}");
         }
@@ -155,11 +178,13 @@ proptest! {
         let hit = linear_hit(&prims, &first).expect("a clear hit");
         assert_sane_hit(&hit, &first);
         let spawned = hit.spawn_ray(wi);
+        assert_origin_near_the_hit(&hit, &spawned);
         check_left_sphere(&prims, &spawned, center, radius, Some(wi.dot(hit.ng) > 0.0));
 
         // A shadow ray towards a point inside the sphere never hits it.
         let target = hit.p + to * (pow10(to_distance) * radius);
         let shadow = hit.spawn_ray_to(target);
+        assert_origin_near_the_hit(&hit, &shadow);
         let outwards = (target - hit.p).dot(hit.ng) > 0.0;
         check_left_sphere(&prims, &shadow, center, radius, Some(outwards));
         let from_centre = (target.as_dvec3() - center.as_dvec3()).length() / f64::from(radius);

@@ -133,6 +133,28 @@ mod tests {
         );
     }
 
+    /// The exit distance is widened by `1 + 2 gamma(3)` (a few ulps, for
+    /// the rounding of the slab distances) and by no more: a ray whose
+    /// interval starts past the exit at `t = 3` misses the box once `t_min`
+    /// is `1e-5` beyond it. Checked by hand: the widening's `2 * gamma(3)`
+    /// made `2 + gamma(3)` or `2 / gamma(3)` (a box three times or
+    /// infinitely deep, which no traversal test sees since a wider box only
+    /// costs time) fails here.
+    #[test]
+    fn the_exit_is_widened_by_a_few_ulps_only() {
+        let b = Aabb {
+            min: Vec3::ZERO,
+            max: Vec3::ONE,
+        };
+        let inv = Vec3A::new(1.0, f32::INFINITY, f32::INFINITY);
+        let o = Vec3A::new(-2.0, 0.5, 0.5);
+        assert_eq!(b.hit_distance(o, inv, 3.0, f32::INFINITY), Some(3.0));
+        assert_eq!(
+            b.hit_distance(o, inv, 3.0 * (1.0 + 1e-5), f32::INFINITY),
+            None
+        );
+    }
+
     #[test]
     fn empty_box_has_no_area_and_is_contained() {
         assert_eq!(Aabb::EMPTY.surface_area(), 0.0);
