@@ -87,3 +87,42 @@ impl Hit {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A hit at `(1, 2, 3)` on a surface facing `+z`, its point known to a
+    /// millionth.
+    fn hit() -> Hit {
+        Hit {
+            t: 1.0,
+            p: Vec3::new(1.0, 2.0, 3.0),
+            p_error: Vec3::splat(1e-6),
+            n: Vec3::Z,
+            ng: Vec3::Z,
+            material: 0,
+            primitive: 0,
+        }
+    }
+
+    /// A shadow ray towards a light sample `distance` away along `wi` runs
+    /// along `wi` and stops `SHADOW_EPSILON` short of the sample; towards a
+    /// light at infinity it never stops. Checked by hand: the target
+    /// `p + distance wi` with its `+` made `-` or `*`, or its `*` made `+`
+    /// or `/`, fails here (the direct-lighting tests, which the mutation
+    /// run of `intersect` does not include, see it too).
+    #[test]
+    fn a_shadow_ray_runs_along_wi_and_stops_short_of_the_sample() {
+        let hit = hit();
+        let wi = Vec3::new(0.6, 0.0, 0.8);
+        let ray = hit.spawn_shadow_ray(wi, 5.0);
+        assert!((ray.dir - wi).abs().max_element() < 1e-6, "{ray:?}");
+        let stop = 5.0 * (1.0 - SHADOW_EPSILON);
+        assert!((ray.t_max - stop).abs() < 1e-5, "{ray:?}");
+        assert!((ray.origin - hit.p).abs().max_element() < 1e-5, "{ray:?}");
+        let to_infinity = hit.spawn_shadow_ray(wi, f32::INFINITY);
+        assert_eq!(to_infinity.dir, wi);
+        assert_eq!(to_infinity.t_max, f32::INFINITY);
+    }
+}
