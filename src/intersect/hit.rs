@@ -110,8 +110,11 @@ mod tests {
     /// along `wi` and stops `SHADOW_EPSILON` short of the sample; towards a
     /// light at infinity it never stops. Checked by hand: the target
     /// `p + distance wi` with its `+` made `-` or `*`, or its `*` made `+`
-    /// or `/`, fails here (the direct-lighting tests, which the mutation
-    /// run of `intersect` does not include, see it too).
+    /// or `/`, fails here, and so does `spawn_ray_to`'s stop
+    /// `distance * (1 - SHADOW_EPSILON)` made `distance / (1 - ...)` or
+    /// `distance * (1 + ...)`, which reaches past the sample (the
+    /// direct-lighting tests, which the mutation run of `intersect` does not
+    /// include, see these too).
     #[test]
     fn a_shadow_ray_runs_along_wi_and_stops_short_of_the_sample() {
         let hit = hit();
