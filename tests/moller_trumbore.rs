@@ -81,3 +81,34 @@ fn moller_trumbore_leaks_at_a_shared_vertex_and_the_watertight_test_does_not() {
     assert_eq!(wt_misses, 0);
     assert!(mt_misses > 0, "expected Möller-Trumbore to leak somewhere");
 }
+
+/// The triangle's edges belong to it, as `0 <= u <= 1` says for `u`: a ray
+/// through a point of an edge, where `v = 0`, `u = 0` or `u + v = 1` comes
+/// out exactly in `f32`, hits. And a triangle so large that its determinant
+/// overflows is refused, not hit at `t = 0` by a ray from its corner (with
+/// `1 / det = 0`, `u`, `v` and `t` all come out 0). Checked by hand: the
+/// edge tests `v < 0` made `v <= 0` and `u + v > 1` made `>= 1`, and the
+/// guard `det == 0 || !det.is_finite()` made `&&`, each fail here.
+#[test]
+fn edges_belong_to_the_triangle_and_an_overflowing_determinant_is_refused() {
+    let shape = TriangleShape::new(Vec3::ZERO, Vec3::X, Vec3::Y);
+    let down = |x: f32, y: f32| Ray::new(Vec3::new(x, y, 1.0), -Vec3::Z);
+    for (x, y, u, v) in [
+        (0.5, 0.0, 0.5, 0.0),
+        (0.0, 0.5, 0.0, 0.5),
+        (0.5, 0.5, 0.5, 0.5),
+    ] {
+        let hit = moller_trumbore(&shape, &down(x, y), f32::INFINITY);
+        let hit = hit.unwrap_or_else(|| panic!("missed the edge at ({x}, {y})"));
+        assert_eq!((hit.t, hit.u, hit.v), (1.0, u, v));
+    }
+    assert!(moller_trumbore(&shape, &down(0.5, -1e-6), f32::INFINITY).is_none());
+
+    let huge = TriangleShape::new(
+        Vec3::ZERO,
+        Vec3::new(1e20, 0.0, 0.0),
+        Vec3::new(0.0, 1e20, 0.0),
+    );
+    let from_corner = Ray::new(Vec3::ZERO, Vec3::new(0.0, 0.6, -0.8));
+    assert!(moller_trumbore(&huge, &from_corner, f32::INFINITY).is_none());
+}
