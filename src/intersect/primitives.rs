@@ -8,7 +8,7 @@
 
 use glam::Vec3;
 
-use crate::math::float::gamma;
+use crate::math::float::{gamma, unit_cross};
 use crate::scene::{MaterialId, Scene, Sphere};
 
 use super::moller_trumbore::moller_trumbore;
@@ -186,7 +186,7 @@ impl Primitives {
             // Point from barycentrics; error bound from pbrt-v4 eq. 6.49.
             let p = w * p0 + hit.u * p1 + hit.v * p2;
             let p_error = gamma(7) * ((w * p0).abs() + (hit.u * p1).abs() + (hit.v * p2).abs());
-            let ng = (p1 - p0).cross(p2 - p0).normalize_or(-ray.dir);
+            let ng = unit_cross(p1 - p0, p2 - p0).unwrap_or(-ray.dir);
             let [n0, n1, n2] = shading.normals;
             let n = (w * n0 + hit.u * n1 + hit.v * n2).normalize_or(ng);
             Hit {
