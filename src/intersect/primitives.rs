@@ -220,6 +220,7 @@ impl Primitives {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::intersect::{Intersector, LinearScan};
     use crate::scene::builtin;
 
     /// What a scene's primitives report about themselves: one per triangle
@@ -250,5 +251,29 @@ mod tests {
         assert!(none.is_empty() && !none.has_spheres());
         assert_eq!(none.len(), 0);
         assert!(none.bounds().is_empty());
+    }
+
+    /// A sphere so small beside its distance (radius `1e-20` seen from 1)
+    /// that the hit point rounds onto its centre has no outward direction
+    /// there; its normal then faces back along the ray, the side the ray
+    /// came from. Checked by hand: the fallback `-ray.dir` made `ray.dir`
+    /// fails here.
+    #[test]
+    fn a_sphere_too_small_for_an_outward_direction_faces_the_ray() {
+        let scene = Scene {
+            spheres: vec![Sphere {
+                center: Vec3::ZERO,
+                radius: 1e-20,
+                material: 0,
+            }],
+            ..Scene::default()
+        };
+        let primitives = Primitives::from_scene(&scene);
+        let ray = Ray::new(Vec3::new(0.0, 0.0, 1.0), -Vec3::Z);
+        let hit = LinearScan::new(&primitives)
+            .intersect(&ray)
+            .expect("aimed at it");
+        assert_eq!(hit.p, Vec3::ZERO);
+        assert_eq!((hit.ng, hit.n), (Vec3::Z, Vec3::Z));
     }
 }
