@@ -181,3 +181,36 @@ fn tiny_triangles_get_the_unit_normal_of_their_winding() {
         assert_eq!(hit.ng, -Vec3::Z, "side {side}");
     }
 }
+
+/// A ray through a point of an edge, or through a corner, hits, whichever
+/// way the triangle is wound and from either side: the edge functions are
+/// zero there and of one sign elsewhere, negative for one winding, positive
+/// for the other. Checked by hand: `e0 > 0` in the test for mixed signs
+/// made `e0 >= 0`, which refuses the edge where `e0 = 0` when the others
+/// are negative, fails here.
+#[test]
+fn edges_and_corners_belong_to_the_triangle_either_way_round() {
+    let points = [
+        (0.5, 0.0),
+        (0.0, 0.5),
+        (0.5, 0.5),
+        (0.0, 0.0),
+        (1.0, 0.0),
+        (0.0, 1.0),
+    ];
+    for tri in [
+        [Vec3::ZERO, Vec3::X, Vec3::Y],
+        [Vec3::ZERO, Vec3::Y, Vec3::X],
+    ] {
+        let prims = one_triangle(tri);
+        for (x, y) in points {
+            for side in [1.0f32, -1.0] {
+                let ray = Ray::new(Vec3::new(x, y, side), Vec3::new(0.0, 0.0, -side));
+                let hit = linear_hit(&prims, &ray);
+                let hit =
+                    hit.unwrap_or_else(|| panic!("missed ({x}, {y}) from z = {side} in {tri:?}"));
+                assert_eq!(hit.t, 1.0);
+            }
+        }
+    }
+}
