@@ -83,7 +83,7 @@ proptest! {
         // fails here.
         for axis in 0..3 {
             let largest = tri.iter().map(|p| p[axis].abs()).fold(0.0, f32::max);
-            let most = f64::from(g(8)) * f64::from(largest);
+            let most = g(8) * f64::from(largest);
             let error = f64::from(hit.p_error[axis]);
             prop_assert!(error <= most, "axis {axis}: error bound {error} > {most}");
         }
