@@ -108,14 +108,18 @@ impl Aabb {
 mod tests {
     use super::*;
 
+    /// The box `[0, 1]^3`, and a ray along `+x` (its `1 / d`) from 2 to the
+    /// left of it, through the middle of its `x = 0` face.
+    const UNIT_BOX: Aabb = Aabb {
+        min: Vec3::ZERO,
+        max: Vec3::ONE,
+    };
+    const ALONG_X: Vec3A = Vec3A::new(1.0, f32::INFINITY, f32::INFINITY);
+    const FROM_LEFT: Vec3A = Vec3A::new(-2.0, 0.5, 0.5);
+
     #[test]
     fn slab_test_finds_entry_and_misses() {
-        let b = Aabb {
-            min: Vec3::ZERO,
-            max: Vec3::ONE,
-        };
-        let inv = Vec3A::new(1.0, f32::INFINITY, f32::INFINITY);
-        let o = Vec3A::new(-2.0, 0.5, 0.5);
+        let (b, inv, o) = (UNIT_BOX, ALONG_X, FROM_LEFT);
         assert_eq!(b.hit_distance(o, inv, 0.0, f32::INFINITY), Some(2.0));
         assert_eq!(b.hit_distance(o, inv, 0.0, 1.5), None);
         let o_above = Vec3A::new(-2.0, 1.5, 0.5);
@@ -142,12 +146,7 @@ mod tests {
     /// costs time) fails here.
     #[test]
     fn the_exit_is_widened_by_a_few_ulps_only() {
-        let b = Aabb {
-            min: Vec3::ZERO,
-            max: Vec3::ONE,
-        };
-        let inv = Vec3A::new(1.0, f32::INFINITY, f32::INFINITY);
-        let o = Vec3A::new(-2.0, 0.5, 0.5);
+        let (b, inv, o) = (UNIT_BOX, ALONG_X, FROM_LEFT);
         assert_eq!(b.hit_distance(o, inv, 3.0, f32::INFINITY), Some(3.0));
         assert_eq!(
             b.hit_distance(o, inv, 3.0 * (1.0 + 1e-5), f32::INFINITY),
