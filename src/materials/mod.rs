@@ -296,3 +296,6 @@ impl Bsdf {
         }
     }
 }
+
+#[cfg(test)]
+mod tests;
