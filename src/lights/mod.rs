@@ -50,15 +50,18 @@ pub use triangles::EmissiveTriangles;
 use glam::{Vec2, Vec3};
 
 use crate::environment::EnvironmentLight;
+use crate::math::float::unit_cross;
 use crate::math::Rgb;
 use crate::scene::Light as SceneLight;
 
 /// The unit normal of the plane the edges `a` and `b` span, on the side of
 /// `direction` (the file's emitting direction, kept as it is when the
 /// edges span no plane or it lies in their plane: the file contradicts
-/// itself, and its stated direction is the one clue left).
+/// itself, and its stated direction is the one clue left). Tiny edges,
+/// whose cross product's squared length is subnormal, still span their
+/// plane: [`unit_cross`] scales before it normalises.
 fn plane_normal(a: Vec3, b: Vec3, direction: Vec3) -> Vec3 {
-    let n = a.cross(b).normalize_or_zero();
+    let n = unit_cross(a, b).unwrap_or(Vec3::ZERO);
     match n.dot(direction) {
         d if d > 0.0 => n,
         d if d < 0.0 => -n,

@@ -40,6 +40,18 @@ fn an_area_light_faces_the_side_its_file_names_with_the_planes_unit_normal() {
     );
 }
 
+// Edges of 1e-12 have a cross product whose squared length (1e-48) is
+// below f32's smallest normal: `normalize_or_zero` gave no normal and the
+// file's tilted direction was kept. Fails with that code.
+#[test]
+fn a_tiny_area_light_still_faces_along_its_planes_normal() {
+    for side in [1e-10, 1e-12, 1e-19] {
+        let tilted = Vec3::new(0.3, -2.0, 0.1);
+        let down = rectangle(Vec3::X * side, Vec3::Z * side, tilted);
+        assert_eq!(down.normal, Vec3::NEG_Y, "sides of {side}");
+    }
+}
+
 #[test]
 fn a_file_that_contradicts_itself_keeps_its_stated_direction() {
     let stated = Vec3::new(1.0, 0.0, 0.5);
