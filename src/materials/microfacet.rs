@@ -222,23 +222,20 @@ impl Conductor {
             return None;
         }
         let wi = (2.0 * cos_oh * h - wo).normalize();
-        if wi.z <= 0.0 || !wi.is_finite() {
-            return None;
-        }
         // Density and value from (wo, wi) alike, so that the weight is
-        // exactly the ratio pdf() and f() give for this pair.
+        // exactly the ratio pdf() and f() give for this pair. A `wi` below
+        // the surface (or NaN) has neither, and `reflection` refuses a
+        // density of 0.
         let (f, pdf) = self.eval(wo, wi);
         BsdfSample::reflection(f, wi, pdf)
     }
 
     /// `wi` cosine-weighted on the hemisphere, whatever the lobe.
     fn sample_cosine(&self, wo: Vec3, u: Vec2) -> Option<BsdfSample> {
+        // A `wi` in the surface has a density of 0, which `reflection`
+        // refuses.
         let wi = sample_cosine_hemisphere(u);
-        let pdf = cosine_hemisphere_pdf(wi);
-        if wi.z <= 0.0 {
-            return None;
-        }
-        BsdfSample::reflection(self.f(wo, wi), wi, pdf)
+        BsdfSample::reflection(self.f(wo, wi), wi, cosine_hemisphere_pdf(wi))
     }
 }
 
@@ -368,6 +365,38 @@ mod tests {
                     assert_eq!(conductor.pdf(wo, wi), 0.0, "{wo} {wi}");
                 }
             }
+        }
+    }
+
+    // Every strategy's sample is the pair its `f` and `pdf` describe, above
+    // the surface, and most draws are kept. Fails with `sample_cosine`
+    // made `None` (the cosine baseline keeps nothing), or with a sample
+    // weighed by another pair than the one it returns.
+    #[test]
+    fn each_strategy_samples_what_its_f_and_pdf_describe() {
+        let wo = Vec3::new(0.4, -0.2, 0.9).normalize();
+        for sampling in [
+            MicrofacetSampling::CosineHemisphere,
+            MicrofacetSampling::HalfVector,
+            MicrofacetSampling::VisibleNormals,
+            MicrofacetSampling::Auto,
+        ] {
+            let conductor = gold(sampling);
+            let mut kept = 0;
+            for i in 0..16 {
+                for j in 0..16 {
+                    let u = Vec2::new((i as f32 + 0.5) / 16.0, (j as f32 + 0.5) / 16.0);
+                    let Some(sample) = conductor.sample(wo, u) else {
+                        continue;
+                    };
+                    kept += 1;
+                    let wi = sample.wi;
+                    assert!(wi.z > 0.0 && !sample.transmission, "{sampling:?} {wi}");
+                    assert_eq!(sample.f, conductor.f(wo, wi), "{sampling:?} {wi}");
+                    assert_eq!(sample.pdf(), conductor.pdf(wo, wi), "{sampling:?} {wi}");
+                }
+            }
+            assert!(kept >= 200, "{sampling:?} kept {kept} of 256 draws");
         }
     }
 }

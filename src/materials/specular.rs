@@ -34,19 +34,24 @@ pub fn refract(wo: Vec3, eta: f32) -> Option<Vec3> {
 mod tests {
     use super::*;
 
+    // `wo` has both `x` and `y`, so that a slip in either (`-wo.y / eta`
+    // made `-wo.y % eta`, missed while `wo.y` was 0) leaves the plane of
+    // incidence or the unit sphere.
     #[test]
-    fn refraction_obeys_snells_law_and_stays_unit() {
-        let wo = Vec3::new(0.6, 0.0, 0.8);
+    fn refraction_obeys_snells_law_in_the_plane_of_incidence_and_stays_unit() {
+        let wo = Vec3::new(0.48, 0.36, 0.8);
         for eta in [1.5f32, 1.0, 1.0 / 1.2] {
             let wi = refract(wo, eta).unwrap();
             assert!((wi.length() - 1.0).abs() < 1e-6);
             let sin_i = (1.0 - wo.z * wo.z).sqrt();
             let sin_t = (1.0 - wi.z * wi.z).sqrt();
             assert!((sin_i - eta * sin_t).abs() < 1e-6, "{eta}");
-            assert!(wi.z < 0.0 && wi.x <= 0.0);
+            // Opposite azimuth: `wi.xy` is a positive multiple of `-wo.xy`.
+            assert!(wi.z < 0.0 && wi.x < 0.0 && wi.y < 0.0, "{eta}: {wi}");
+            assert!((wi.x * wo.y - wi.y * wo.x).abs() < 1e-6, "{eta}: {wi}");
         }
         assert_eq!(refract(wo, 1.0).unwrap(), -wo, "index 1 goes straight on");
         assert!(refract(Vec3::new(0.9, 0.0, 0.436), 1.0 / 1.5).is_none());
-        assert_eq!(reflect(wo), Vec3::new(-0.6, 0.0, 0.8));
+        assert_eq!(reflect(wo), Vec3::new(-0.48, -0.36, 0.8));
     }
 }
