@@ -101,7 +101,9 @@ impl Beckmann {
         self.alpha
     }
 
-    /// The normal distribution `D(h)` (0 for `h.z <= 0`).
+    /// The normal distribution `D(h)` (0 for `h.z <= 0`). It depends on
+    /// `h`'s direction only: `h` need not be of unit length (`wo + wi`
+    /// will do).
     pub fn d(&self, h: Vec3) -> f32 {
         if h.z <= 0.0 {
             return 0.0;

@@ -115,3 +115,48 @@ fn visible_slopes_follow_their_cdf() {
         }
     }
 }
+
+// `D` of a half vector not normalised (`wo + wi`) is `D` of its
+// direction. Fails with `cos^2 = h.z^2 / |h|^2` made `h.z^2 |h|^2` (which
+// no caller with a unit `h` sees).
+#[test]
+fn d_depends_on_the_direction_of_h_only() {
+    let b = Beckmann::new(0.3);
+    for h in [Vec3::Z, Vec3::new(0.2, -0.1, 0.9), Vec3::new(0.5, 0.4, 0.6)] {
+        let unit = b.d(h.normalize());
+        for scale in [0.25, 3.0] {
+            let d = b.d(h.normalize() * scale);
+            assert!(
+                (d - unit).abs() <= 1e-6 * unit,
+                "{h} x {scale}: {d} vs {unit}"
+            );
+        }
+    }
+}
+
+// Heitz 2014 (section 6): the height-correlated `G` counts a microfacet
+// masked and shadowed at once once, so it lies between the separable
+// product `G1(wo) G1(wi)` and the smaller of the two `G1`, strictly when
+// both directions are masked in part, and it is `G1` of the other
+// direction when one is the normal. Fails with any operator of `g` swapped
+// or its value made a constant.
+#[test]
+fn the_height_correlated_g_lies_between_the_separable_product_and_each_g1() {
+    let b = Beckmann::new(0.5);
+    let grazing = [
+        Vec3::new(0.8, 0.0, 0.6),
+        Vec3::new(-0.6, 0.6, 0.3).normalize(),
+        Vec3::new(0.1, -0.95, 0.2).normalize(),
+    ];
+    for wo in grazing {
+        assert_eq!(b.g(wo, Vec3::Z), b.g1(wo), "{wo}");
+        assert_eq!(b.g(Vec3::Z, wo), b.g1(wo), "{wo}");
+        for wi in grazing {
+            let (g, go, gi) = (b.g(wo, wi), b.g1(wo), b.g1(wi));
+            assert!(go < 1.0 && gi < 1.0, "{wo} {wi}: both in part masked");
+            assert!(go * gi < g && g < go.min(gi), "{wo} {wi}: {g}");
+            assert_eq!(g, b.g(wi, wo), "{wo} {wi}");
+        }
+    }
+    assert_eq!(b.g(Vec3::Z, Vec3::Z), 1.0);
+}
