@@ -160,3 +160,26 @@ fn the_height_correlated_g_lies_between_the_separable_product_and_each_g1() {
     }
     assert_eq!(b.g(Vec3::Z, Vec3::Z), 1.0);
 }
+
+// `pdf_h` is the density of `sample_h`: the probability it puts on the
+// cap `theta <= theta_h` of the normal drawn at `u.x` is `u.x`, and the
+// azimuth is `2 pi u.y`. Fails with `pdf_h` made a constant or its `*`
+// made `+` or `/` (nothing in the renderer calls it: the conductor
+// computes `D cos` itself; the starter's `sample_f` has it).
+#[test]
+fn pdf_h_is_the_density_of_sample_h() {
+    for alpha in [0.1f32, 0.6] {
+        let b = Beckmann::new(alpha);
+        for u in [0.1f32, 0.5, 0.9] {
+            let h = b.sample_h(Vec2::new(u, 0.3));
+            let theta = f64::from(h.z).acos();
+            let cap = hemisphere_integral(theta, 600, |m| f64::from(b.pdf_h(m)));
+            assert!(
+                (cap - f64::from(u)).abs() < 1e-3,
+                "alpha {alpha}, u {u}: {cap}"
+            );
+            let phi = f64::from(h.y).atan2(f64::from(h.x));
+            assert!((phi - 0.6 * PI).abs() < 1e-5, "alpha {alpha}, u {u}: {phi}");
+        }
+    }
+}
