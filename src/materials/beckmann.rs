@@ -201,14 +201,14 @@ impl Beckmann {
         // Plain square roots: the components are at most 1 in size, so
         // `hypot`'s guard against overflow buys nothing here, at a cost.
         let r = (sx * sx + sy * sy).sqrt();
-        let len = (r * r + sz * sz).sqrt();
-        let (cos_theta, sin_theta) = (sz / len, r / len);
         let (cos_phi, sin_phi) = if r > 0.0 {
             (sx / r, sy / r)
         } else {
             (1.0, 0.0)
         };
-        let (x, y) = sample_unit_slopes(cos_theta, sin_theta, u);
+        // (sz, r) is (cos(theta), sin(theta)) times the stretched length,
+        // and only their ratio counts: no need to normalise.
+        let (x, y) = sample_unit_slopes(sz, r, u);
         // Rotate to wo's azimuth, unstretch, and turn the slopes into a normal.
         let mx = alpha * (cos_phi * x - sin_phi * y);
         let my = alpha * (sin_phi * x + cos_phi * y);
@@ -235,18 +235,24 @@ impl Beckmann {
 const SLOPE_TOLERANCE: f64 = 1e-8;
 
 /// The slopes `(x, y)` of a normal visible from the direction at polar
-/// angle `theta` (azimuth 0) on the `alpha = 1` Beckmann surface.
+/// angle `theta` (azimuth 0) on the `alpha = 1` Beckmann surface, given
+/// `(cos(theta), sin(theta))` up to a common positive factor: `C` and its
+/// target scale with it, so the slope depends on `cot(theta)` alone.
 fn sample_unit_slopes(cos_theta: f64, sin_theta: f64, u: Vec2) -> (f64, f64) {
+    let (x, _steps) = visible_slope_x(cos_theta, sin_theta, u.x);
+    (x, erfinv(2.0 * f64::from(u.y) - 1.0))
+}
+
+/// The `x` with `C(x) = u C(top)` (the module doc's `C`, `top` the least
+/// of `cot(theta)` and 6), and how many Newton or bisection steps found it.
+fn visible_slope_x(cos_theta: f64, sin_theta: f64, u: f32) -> (f64, u32) {
     // C(x) as in the module doc, increasing on (-inf, cot(theta)], and its
     // derivative; both need exp(-x^2), computed once for the pair.
     let cdf = |x: f64, gauss: f64| cos_theta * (1.0 + libm::erf(x)) + sin_theta * gauss / SQRT_PI;
     let density = |x: f64, gauss: f64| 2.0 * (cos_theta - x * sin_theta) * gauss / SQRT_PI;
-    // Beyond |x| = 6 the CDF changes by less than 1e-15 of its range.
-    let cot = if sin_theta > 0.0 {
-        cos_theta / sin_theta
-    } else {
-        f64::INFINITY
-    };
+    // Beyond |x| = 6 the CDF changes by less than 1e-15 of its range. At
+    // normal incidence (`sin = 0`) `cot` is infinite.
+    let cot = cos_theta / sin_theta;
     let (mut lo, mut hi) = (-6.0f64, cot.min(6.0));
     // C(6) is 2 cos(theta) to the last bit when cot(theta) >= 6: erf(6)
     // rounds to 1, and sin(theta) exp(-36) / sqrt(pi) < 1e-17 cos(theta).
@@ -255,15 +261,15 @@ fn sample_unit_slopes(cos_theta: f64, sin_theta: f64, u: Vec2) -> (f64, f64) {
     } else {
         cdf(hi, (-hi * hi).exp())
     };
-    let target = f64::from(u.x).clamp(0.0, 1.0) * top;
+    let target = f64::from(u).clamp(0.0, 1.0) * top;
     // Start from the normal-incidence answer, erfinv(2 u - 1), to the
     // polynomial's 1e-7: the Newton steps below refine it anyway.
-    let mut x = erfinv_estimate(2.0 * f64::from(u.x) - 1.0).clamp(lo, hi);
-    for _ in 0..64 {
+    let mut x = erfinv_estimate(2.0 * f64::from(u) - 1.0).clamp(lo, hi);
+    for step in 0..64 {
         let gauss = (-x * x).exp();
         let err = cdf(x, gauss) - target;
         if err.abs() <= SLOPE_TOLERANCE * target.max(1e-300) {
-            break;
+            return (x, step);
         }
         if err > 0.0 {
             hi = x;
@@ -277,11 +283,10 @@ fn sample_unit_slopes(cos_theta: f64, sin_theta: f64, u: Vec2) -> (f64, f64) {
             0.5 * (lo + hi)
         };
         if hi - lo < 1e-9 {
-            break;
+            return (x, step + 1);
         }
     }
-    let y = erfinv(2.0 * f64::from(u.y) - 1.0);
-    (x, y)
+    (x, 64)
 }
 
 #[cfg(test)]

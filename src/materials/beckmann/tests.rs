@@ -107,6 +107,10 @@ fn visible_slopes_follow_their_cdf() {
             let u = k as f32 / 100.0;
             let (x, _) = sample_unit_slopes(c, s, Vec2::new(u, 0.5));
             assert!(x <= top + 1e-12);
+            // Only cot(theta) counts: `sample_visible` passes the
+            // stretched direction's (z, r) without normalising.
+            let (scaled, _) = sample_unit_slopes(0.3 * c, 0.3 * s, Vec2::new(u, 0.5));
+            assert!((scaled - x).abs() < 1e-7, "theta {theta}, u {u}");
             let got = cdf(x) / cdf(top);
             assert!(
                 (got - f64::from(u)).abs() <= SLOPE_TOLERANCE * f64::from(u),
@@ -182,4 +186,30 @@ fn pdf_h_is_the_density_of_sample_h() {
             assert!((phi - 0.6 * PI).abs() < 1e-5, "alpha {alpha}, u {u}: {phi}");
         }
     }
+}
+
+// Newton's method from the normal-incidence estimate converges fast: over
+// `theta` from 0 to grazing and `u` across (0, 1), 4.4 steps on average
+// and at most 14 (measured; both bounds leave a margin). The answer is
+// held by `visible_slopes_follow_their_cdf`; this holds the speed, which
+// no answer shows, as the bisection bracket rescues any slower search.
+// Fails with the derivative made wrong (`/ sqrt(pi)` made `* sqrt(pi)`:
+// mean 46), the start made wrong (`2 u - 1` made `2 + u - 1`: mean 6.0),
+// the step reversed (`x - err / C'` made `+`: mean 27) or the bracket's
+// acceptance made `==` (mean 27).
+#[test]
+fn the_visible_slope_is_found_in_a_few_newton_steps() {
+    let (mut total, mut count, mut most) = (0u64, 0u64, 0);
+    for i in 0..=100 {
+        let theta = std::f64::consts::FRAC_PI_2 * (f64::from(i) / 100.0).min(1.0 - 1e-6);
+        for k in 1..1000 {
+            let u = k as f32 / 1000.0;
+            let (_, steps) = visible_slope_x(theta.cos(), theta.sin(), u);
+            total += u64::from(steps);
+            count += 1;
+            most = most.max(steps);
+        }
+    }
+    let mean = total as f64 / count as f64;
+    assert!(mean <= 5.0 && most <= 16, "mean {mean}, most {most}");
 }
