@@ -189,8 +189,13 @@ impl Beckmann {
         self.d(h) * h.z.max(0.0)
     }
 
-    /// A normal drawn from the normals visible from `wo` (`wo.z > 0`).
+    /// A normal drawn from the normals visible from `wo` (`wo.z > 0`;
+    /// from `wo` at or below the surface, which sees none, the macro
+    /// normal, of density 0 by [`Self::pdf_visible`]).
     pub fn sample_visible(&self, wo: Vec3, u: Vec2) -> Vec3 {
+        if wo.z <= 0.0 || wo.z.is_nan() {
+            return Vec3::Z;
+        }
         let alpha = f64::from(self.alpha);
         // Stretch to alpha = 1.
         let (sx, sy, sz) = (

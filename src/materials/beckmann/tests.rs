@@ -213,3 +213,19 @@ fn the_visible_slope_is_found_in_a_few_newton_steps() {
     let mean = total as f64 / count as f64;
     assert!(mean <= 5.0 && most <= 16, "mean {mean}, most {most}");
 }
+
+// A `wo` at or below the surface sees no normal: the sampler returns the
+// macro normal (density 0) rather than running its solver on a negative
+// `cot(theta)`, whose bracket would be empty (`clamp` panicked there).
+#[test]
+fn nothing_is_visible_from_below_the_surface() {
+    let b = Beckmann::new(0.3);
+    for wo in [
+        -Vec3::Z,
+        Vec3::new(0.3, 0.0, -0.95),
+        Vec3::new(1.0, 0.0, 0.0),
+    ] {
+        assert_eq!(b.sample_visible(wo, Vec2::new(0.7, 0.2)), Vec3::Z, "{wo}");
+        assert_eq!(b.pdf_visible(wo, Vec3::Z), 0.0, "{wo}");
+    }
+}

@@ -55,7 +55,8 @@ fn at_slope(alpha: f32, slope: f32, azimuth: f32) -> Vec3 {
 // is far from `2 alpha` and from 1. Fails with each arithmetic mutant of
 // the comparison, `<` made `==` or `>`, the guard `!=` made `==`, or
 // the strategy made `Default::default()` (which is `Auto`); the
-// density checks that `pdf` follows the strategy chosen.
+// density, taken where the two strategies' densities differ, checks that
+// `pdf` follows the strategy chosen.
 // (`<` made `<=` differs only where the two products are equal in f64.)
 #[test]
 fn auto_draws_the_half_vector_below_the_stretched_slope_and_visible_normals_above() {
@@ -76,12 +77,28 @@ fn auto_draws_the_half_vector_below_the_stretched_slope_and_visible_normals_abov
                 let wo = at_slope(alpha, s, azimuth);
                 let what = format!("alpha {alpha}, slope {s}, azimuth {azimuth}");
                 assert_eq!(auto.strategy(wo), expected, "{what}");
-                let explicit = Conductor {
-                    sampling: expected,
-                    ..auto
-                };
-                let wi = Vec3::new(-0.2, 0.1, 0.97).normalize();
-                assert_eq!(auto.pdf(wo, wi), explicit.pdf(wo, wi), "{what}");
+                let with = |sampling| Conductor { sampling, ..auto };
+                // `wo` reflected about a normal a slope `alpha` off the
+                // pole, tilted towards `wo` (so that `wi` stays above the
+                // surface): in the lobe, where `D` is far from 0 and the
+                // two densities differ (but at normal incidence, where
+                // they are the same function).
+                let (toward, across) =
+                    (Vec2::from_angle(azimuth), Vec2::from_angle(azimuth).perp());
+                let tilt = alpha * (0.8 * toward + 0.5 * across);
+                let h = Vec3::new(tilt.x, tilt.y, 1.0).normalize();
+                let wi = 2.0 * wo.dot(h) * h - wo;
+                let pdf = auto.pdf(wo, wi);
+                assert!(pdf > 0.0, "{what}");
+                assert_eq!(pdf, with(expected).pdf(wo, wi), "{what}");
+                let (half, visible) = (
+                    with(HalfVector).pdf(wo, wi),
+                    with(VisibleNormals).pdf(wo, wi),
+                );
+                assert!(
+                    s == 0.0 || (half - visible).abs() > 1e-3 * half,
+                    "{what}: {half} {visible}"
+                );
             }
         }
     }
@@ -103,8 +120,8 @@ fn an_explicit_sampling_strategy_is_kept_whatever_the_slope() {
 
 // A direction below (or in) the surface gets neither value nor density,
 // whichever of the two it is. Fails with `half_terms`' `||` made `&&`
-// (then one direction below is let through: `f` comes out negative and
-// the visible normals' density positive).
+// (then one direction below is let through, and the visible normals give
+// the direction in the surface a positive density).
 #[test]
 fn a_direction_below_the_surface_has_no_value_and_no_density() {
     let above = Vec3::new(0.3, 0.1, 0.9).normalize();
