@@ -2,7 +2,8 @@
 //! one evaluation (`f` and `pdf` at once) cost, per sampling strategy, for
 //! a smooth and a rough lobe seen near the normal and near grazing. The
 //! visible normals invert their slope CDF by Newton's method
-//! (`materials::beckmann`), which these time. See `docs/10-performance.md`.
+//! (`materials::beckmann`), which these time. The metal is the built-in
+//! scenes' copper. See `docs/10-performance.md`.
 //!
 //! `cargo bench --bench materials`
 
@@ -11,7 +12,7 @@ use glam::{Vec2, Vec3};
 use pathtracer::materials::{Conductor, MicrofacetSampling};
 use pathtracer::math::rng::{next_2d, sampler};
 use pathtracer::math::warp::sample_cosine_hemisphere;
-use pathtracer::math::Rgb;
+use pathtracer::scene::builtin::{COPPER_ETA, COPPER_K};
 
 /// Points per timed loop.
 const POINTS: usize = 1 << 14;
@@ -23,8 +24,6 @@ fn materials(c: &mut Criterion) {
         .iter()
         .map(|&u| sample_cosine_hemisphere(u))
         .collect();
-    // Gold.
-    let (eta, k) = (Rgb::new(0.143, 0.375, 1.442), Rgb::new(3.983, 2.386, 1.603));
     for alpha in [0.05f32, 0.3] {
         for cos_o in [0.9f32, 0.2] {
             let wo = Vec3::new((1.0 - cos_o * cos_o).sqrt(), 0.0, cos_o);
@@ -36,7 +35,7 @@ fn materials(c: &mut Criterion) {
                 ("visible normals", MicrofacetSampling::VisibleNormals),
                 ("auto", MicrofacetSampling::Auto),
             ] {
-                let conductor = Conductor::new(alpha, eta, k, sampling);
+                let conductor = Conductor::new(alpha, COPPER_ETA, COPPER_K, sampling);
                 group.bench_function(format!("sample, {name}"), |b| {
                     b.iter(|| {
                         points
@@ -47,7 +46,7 @@ fn materials(c: &mut Criterion) {
                     })
                 });
             }
-            let conductor = Conductor::new(alpha, eta, k, MicrofacetSampling::Auto);
+            let conductor = Conductor::new(alpha, COPPER_ETA, COPPER_K, MicrofacetSampling::Auto);
             group.bench_function("eval", |b| {
                 b.iter(|| {
                     incoming
