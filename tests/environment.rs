@@ -10,8 +10,8 @@
 //!   sampling alone (two-sample z-tests);
 //! - no NaN or infinite radiance under every map tried: a tiny bright sun
 //!   on the horizon (grazing a floor), at a pole, all black, the built-in sky;
-//! - the plan's four map samples a vertex change the noise, not the image,
-//!   and drawn in a batch they are the samples one at a time, bit for bit.
+//! - the plan's four map samples a vertex change the noise, not the image
+//!   (drawn in a batch and in strata: `environment_samples.rs`).
 //!
 //! The map files themselves are tested in `environment_files.rs`.
 //!
@@ -20,16 +20,14 @@
 mod common;
 
 use common::{
-    accel, assert_mean_matches, assert_means_agree, diffuse, rect_light, tracer, MeanEstimate,
-    SceneBuilder, ALPHA, HEMISPHERE, LIGHTS,
+    accel, assert_mean_matches, assert_means_agree, diffuse, lumpy_map, sphere_on_floor, tracer,
+    MeanEstimate, SceneBuilder, ALPHA, HEMISPHERE, LIGHTS,
 };
-use glam::{Vec2, Vec3};
+use glam::Vec3;
 use pathtracer::direct::DirectLights;
-use pathtracer::environment::{
-    builtin_sky, uv_to_direction, EnvironmentLight, EnvironmentMap, EnvironmentSampling,
-};
+use pathtracer::environment::{builtin_sky, EnvironmentLight, EnvironmentMap, EnvironmentSampling};
 use pathtracer::global::{DirectStrategy, PathTracer};
-use pathtracer::intersect::{Intersector, Ray};
+use pathtracer::intersect::Ray;
 use pathtracer::lights::{LightChoiceRule, LightPdf};
 use pathtracer::math::rng::{next_2d, sampler};
 use pathtracer::math::warp::sample_uniform_sphere;
@@ -54,27 +52,6 @@ fn constant_map(radiance: f32) -> EnvironmentMap {
     EnvironmentMap::new("constant", 16, 8, vec![Rgb::splat(radiance); 128]).unwrap()
 }
 
-/// A bright lobe, a gradient, and a black band (rows 10 and 11 of 32)
-/// whose neighbours are bright.
-fn lumpy_map() -> EnvironmentMap {
-    let lobe = Vec3::new(0.5, 0.6, -0.62).normalize();
-    let texels = (0..64 * 32)
-        .map(|k| {
-            let (i, j) = (k % 64, k / 64);
-            if j == 10 || j == 11 {
-                return Rgb::ZERO;
-            }
-            let uv = Vec2::new((i as f32 + 0.5) / 64.0, (j as f32 + 0.5) / 32.0);
-            let d = uv_to_direction(uv);
-            let gradient = Rgb::new(0.3, 0.5, 0.8) * (1.0 + d.y);
-            let spot = 30.0 * (-(1.0 - d.dot(lobe)) / 0.05).exp();
-            let band = if j == 9 || j == 12 { 8.0 } else { 0.0 };
-            gradient + Rgb::new(1.0, 0.9, 0.7) * (spot + band)
-        })
-        .collect();
-    EnvironmentMap::new("lumpy", 64, 32, texels).unwrap()
-}
-
 /// A map of radiance 0.05 with one texel `(i, j)` of radiance `sun`.
 fn tiny_sun(i: usize, j: usize, sun: f32) -> EnvironmentMap {
     let mut texels = vec![Rgb::splat(0.05); 128 * 64];
@@ -87,24 +64,6 @@ fn lone_sphere(albedo: f32) -> Scene {
     let mut b = SceneBuilder::new();
     let m = b.material(diffuse(albedo));
     b.sphere(Vec3::ZERO, 1.0, m);
-    b.finish()
-}
-
-/// A sphere of radius 0.5 resting on a floor quad.
-fn sphere_on_floor() -> Scene {
-    let mut b = SceneBuilder::new();
-    let floor = b.material(diffuse(0.5));
-    let ball = b.material(diffuse(0.8));
-    b.quad(
-        floor,
-        [
-            Vec3::new(-2.0, 0.0, 2.0),
-            Vec3::new(2.0, 0.0, 2.0),
-            Vec3::new(2.0, 0.0, -2.0),
-            Vec3::new(-2.0, 0.0, -2.0),
-        ],
-    );
-    b.sphere(Vec3::new(0.0, 0.5, 0.0), 0.5, ball);
     b.finish()
 }
 
@@ -288,103 +247,4 @@ fn four_environment_samples_a_vertex_change_the_noise_not_the_image() {
         by_four.se,
         by_one.se
     );
-}
-
-/// A sampler that logs the kind of each draw: 1 for a number, 2 for a pair.
-struct Logged {
-    inner: IndependentSampler,
-    log: Vec<u8>,
-}
-
-impl Sampler for Logged {
-    fn start_pixel_sample(&mut self, pixel: (u32, u32), index: u32) {
-        self.inner.start_pixel_sample(pixel, index);
-    }
-    fn get_1d(&mut self) -> f32 {
-        self.log.push(1);
-        self.inner.get_1d()
-    }
-    fn get_2d(&mut self) -> Vec2 {
-        self.log.push(2);
-        self.inner.get_2d()
-    }
-}
-
-/// Light samples drawn in batches (`DirectLights::estimate`, their cache
-/// misses overlapped) are the samples drawn one at a time: each sample
-/// draws its number and then its pair, light after light (a rectangle,
-/// then the map), as before batches; and the same numbers in the same
-/// order give the same estimate to the bit, for counts within one batch
-/// and past it (without MIS, whose weight depends on the count). Checked
-/// to fail by hand: with the batch drawing all numbers before all pairs,
-/// or each pair before its number, the log differs and every count above
-/// one gives another estimate.
-#[test]
-fn batched_environment_samples_are_the_samples_one_at_a_time() {
-    let mut builder = SceneBuilder::new();
-    let floor = builder.material(diffuse(0.5));
-    builder.floor(floor, 2.0);
-    builder.light(rect_light(
-        4.0,
-        Vec3::new(0.0, 3.0, 0.0),
-        -Vec3::Y,
-        0.5,
-        0.5,
-    ));
-    let scene = builder.finish();
-    let env = EnvironmentLight::new(lumpy_map(), EnvironmentSampling::Importance);
-    let lit = accel(&scene);
-    let world = World::new(&scene, &lit).with_environment(Some(env));
-    let origin = Vec3::new(0.3, 2.0, 1.5);
-    let ray = Ray::new(origin, (Vec3::new(0.6, 0.0, 0.4) - origin).normalize());
-    let hit = world
-        .intersector
-        .intersect(&ray)
-        .expect("the ray meets the floor");
-    let point = world.shade_surface(hit, -ray.dir);
-
-    let with_mis = DirectLights {
-        samples_per_light: 3,
-        environment_samples: Some(11),
-        mis: true,
-    };
-    let mut logged = Logged {
-        inner: IndependentSampler::from_stream(5, 0),
-        log: Vec::new(),
-    };
-    with_mis.estimate(&world, &point, &mut logged);
-    let expected: Vec<u8> = [3, 11].iter().flat_map(|&n| [1, 2].repeat(n)).collect();
-    assert_eq!(world.lights.lit().count(), 2);
-    assert_eq!(logged.log, expected, "draws: 1 a number, 2 a pair");
-
-    // The estimates, under the map alone.
-    let scene = sphere_on_floor();
-    let unlit = accel(&scene);
-    let env = EnvironmentLight::new(lumpy_map(), EnvironmentSampling::Importance);
-    let world = World::new(&scene, &unlit).with_environment(Some(env));
-    let hit = world
-        .intersector
-        .intersect(&ray)
-        .expect("the ray meets the floor");
-    let point = world.shade_surface(hit, -ray.dir);
-    for n in [2, 8, 11, 19] {
-        let batched = DirectLights {
-            samples_per_light: 1,
-            environment_samples: Some(n),
-            mis: false,
-        };
-        let single = DirectLights {
-            environment_samples: Some(1),
-            ..batched
-        };
-        let mut a = IndependentSampler::from_stream(5, n as u64);
-        let mut b = IndependentSampler::from_stream(5, n as u64);
-        let got = batched.estimate(&world, &point, &mut a);
-        let mut sum = Rgb::ZERO;
-        for _ in 0..n {
-            sum += single.estimate(&world, &point, &mut b);
-        }
-        assert!(sum != Rgb::ZERO, "the floor is lit");
-        assert_eq!(got, sum / n as f32, "{n} samples");
-    }
 }

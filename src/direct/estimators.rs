@@ -9,6 +9,7 @@ use crate::lights::{Light, LightChoice, LightPdf, LightSample, LightSet, LightSt
 use crate::math::mis::power_heuristic;
 use crate::math::warp::{sample_uniform_hemisphere, uniform_hemisphere_pdf};
 use crate::math::Rgb;
+use crate::sampling::strata::stratum_point;
 use crate::sampling::Sampler;
 use crate::world::{ShadingPoint, World};
 
@@ -126,6 +127,12 @@ impl DirectLights {
                 let mut total = Rgb::ZERO;
                 for (index, light) in lights.lit() {
                     let strategy = self.strategy(lights, index);
+                    // An environment map's samples in strata of its
+                    // rows (`sampling::strata`); an area light's count is
+                    // the course's `-l`, its samples independent.
+                    let n = strategy.samples as usize;
+                    let strata = n > 1 && matches!(light, Light::Environment(_));
+                    let mut k = 0;
                     let mut sum = Rgb::ZERO;
                     let mut left = strategy.samples as usize;
                     while left > 0 {
@@ -133,22 +140,24 @@ impl DirectLights {
                         // sample at a time would draw them, so the image
                         // is the same; their misses overlap.
                         let count = left.min(BATCH);
-                        let mut numbers = [(0.0, Vec2::ZERO); BATCH];
+                        let mut batch = [(0.0, Vec2::ZERO); BATCH];
                         // One sample has no misses to overlap (and its
                         // sampling prefetches its own texels).
                         let prefetch = count > 1;
-                        for n in &mut numbers[..count] {
-                            *n = (sampler.get_1d(), sampler.get_2d());
+                        for number in &mut batch[..count] {
+                            let (uc, u) = (sampler.get_1d(), sampler.get_2d());
+                            *number = (uc, if strata { stratum_point(u, k, n) } else { u });
+                            k += 1;
                             if prefetch {
-                                light.prefetch_sample_guide(n.1);
+                                light.prefetch_sample_guide(number.1);
                             }
                         }
                         if prefetch {
-                            for &(_, u) in &numbers[..count] {
+                            for &(_, u) in &batch[..count] {
                                 light.prefetch_sample_cdf(u);
                             }
                         }
-                        for &(uc, u) in &numbers[..count] {
+                        for &(uc, u) in &batch[..count] {
                             if let Some(sample) = light.sample_li(point.hit.p, uc, u) {
                                 sum += self.contribution(world, point, &sample, strategy);
                             }

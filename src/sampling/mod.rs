@@ -31,6 +31,7 @@
 
 pub mod independent;
 pub mod sobol;
+pub mod strata;
 pub mod zsobol;
 
 pub use independent::IndependentSampler;

@@ -2,13 +2,14 @@
 //! they compare, and the plumbing to average a path tracer's radiance
 //! along one ray.
 
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 use pathtracer::bvh::BvhAccel;
 use pathtracer::direct::{DirectHemisphere, DirectLights};
+use pathtracer::environment::{uv_to_direction, EnvironmentMap};
 use pathtracer::global::{DirectStrategy, PathTracer, Roulette};
 use pathtracer::intersect::{Intersector, Primitives, Ray};
-use pathtracer::math::luminance;
 use pathtracer::math::Frame;
+use pathtracer::math::{luminance, Rgb};
 use pathtracer::sampling::IndependentSampler;
 use pathtracer::scene::normals::area_weighted_vertex_normals;
 use pathtracer::scene::{Light, Material, MaterialId, Scene, Sphere};
@@ -276,4 +277,43 @@ pub fn estimate<I: Intersector>(
         assert!(l.is_finite(), "non-finite radiance {l}");
         luminance(l) as f64
     }))
+}
+
+/// A bright lobe, a gradient, and a black band (rows 10 and 11 of 32)
+/// whose neighbours are bright.
+pub fn lumpy_map() -> EnvironmentMap {
+    let lobe = Vec3::new(0.5, 0.6, -0.62).normalize();
+    let texels = (0..64 * 32)
+        .map(|k| {
+            let (i, j) = (k % 64, k / 64);
+            if j == 10 || j == 11 {
+                return Rgb::ZERO;
+            }
+            let uv = Vec2::new((i as f32 + 0.5) / 64.0, (j as f32 + 0.5) / 32.0);
+            let d = uv_to_direction(uv);
+            let gradient = Rgb::new(0.3, 0.5, 0.8) * (1.0 + d.y);
+            let spot = 30.0 * (-(1.0 - d.dot(lobe)) / 0.05).exp();
+            let band = if j == 9 || j == 12 { 8.0 } else { 0.0 };
+            gradient + Rgb::new(1.0, 0.9, 0.7) * (spot + band)
+        })
+        .collect();
+    EnvironmentMap::new("lumpy", 64, 32, texels).unwrap()
+}
+
+/// A sphere of radius 0.5 resting on a floor quad.
+pub fn sphere_on_floor() -> Scene {
+    let mut b = SceneBuilder::new();
+    let floor = b.material(diffuse(0.5));
+    let ball = b.material(diffuse(0.8));
+    b.quad(
+        floor,
+        [
+            Vec3::new(-2.0, 0.0, 2.0),
+            Vec3::new(2.0, 0.0, 2.0),
+            Vec3::new(2.0, 0.0, -2.0),
+            Vec3::new(-2.0, 0.0, -2.0),
+        ],
+    );
+    b.sphere(Vec3::new(0.0, 0.5, 0.0), 0.5, ball);
+    b.finish()
 }
