@@ -76,10 +76,11 @@ fn floor_point<I: Intersector>(world: &World<I>) -> ShadingPoint {
 /// and the map's samples give the estimate of its samples one at a time
 /// at the same points (each pair moved into its stratum), to the bit, for
 /// counts within one batch and past it (without MIS, whose weight depends
-/// on the count). Checked to fail by hand: with the batch drawing all
-/// numbers before all pairs the log differs; with a batch's strata
-/// restarted at `k = 0`, every count past one batch gives another
-/// estimate.
+/// on the count), while an area light's samples keep their pairs. Checked
+/// to fail by hand: with the batch drawing all numbers before all pairs
+/// the log differs; with a batch's strata restarted at `k = 0`, every
+/// count past one batch gives another estimate; with area lights in
+/// strata too (the rule's `&&` made `||`), the rectangle's estimate.
 #[test]
 fn batched_environment_samples_are_the_samples_one_at_a_time() {
     let mut builder = SceneBuilder::new();
@@ -109,6 +110,28 @@ fn batched_environment_samples_are_the_samples_one_at_a_time() {
     let expected: Vec<u8> = [3, 11].iter().flat_map(|&n| [1, 2].repeat(n)).collect();
     assert_eq!(world.lights.lit().count(), 2);
     assert_eq!(logged.log, expected, "draws: 1 a number, 2 a pair");
+
+    // The rectangle's samples (the map taken away) keep their pairs as
+    // drawn: its three samples are three single samples from the stream.
+    let rectangle = World::new(&scene, &lit);
+    let point = floor_point(&rectangle);
+    let three = DirectLights {
+        samples_per_light: 3,
+        environment_samples: None,
+        mis: false,
+    };
+    let single = DirectLights {
+        samples_per_light: 1,
+        ..three
+    };
+    let mut a = IndependentSampler::from_stream(5, 1);
+    let mut b = IndependentSampler::from_stream(5, 1);
+    let got = three.estimate(&rectangle, &point, &mut a);
+    let sum = (0..3).fold(Rgb::ZERO, |sum, _| {
+        sum + single.estimate(&rectangle, &point, &mut b)
+    });
+    assert!(sum != Rgb::ZERO, "the rectangle lights the floor");
+    assert_eq!(got, sum / 3.0, "an area light's samples");
 
     // The estimates, under the map alone.
     let scene = sphere_on_floor();

@@ -45,6 +45,16 @@ fn each_point_lies_in_its_own_stratum() {
     }
 }
 
+// The last stratum's top: `(3 + 0.99999994) / 4` rounds to 1, and the
+// point is the largest `f32` below 1, not 1 nor a few units lower (fails
+// with the clamp's `EPSILON / 2` made `EPSILON * 2` or `EPSILON % 2`).
+#[test]
+fn the_last_stratum_ends_just_below_one() {
+    let top = 0.999_999_94f32;
+    assert_eq!(top, 1.0 - f32::EPSILON / 2.0);
+    assert_eq!(stratum_point(Vec2::new(0.5, top), 3, 4).y, top);
+}
+
 // Each point is uniform in its stratum for a uniform pair (what keeps the
 // average unbiased): point `k` of `n` over 64,000 pairs, in 64 equal
 // slices of its stratum, by a chi-square test at the 1e-6 level (63
