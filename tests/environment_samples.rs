@@ -6,7 +6,7 @@
 //!   (`sampling::strata`; an area light's samples are left as drawn), which
 //!   gives the image of independent samples with less noise under a sun.
 //!
-//! Seeds are fixed; the comparisons share `ALPHA` (Bonferroni).
+//! Seeds are fixed; the one z-test is at `ALPHA`.
 
 mod common;
 
@@ -43,19 +43,22 @@ impl Sampler for Logged {
     }
 }
 
-/// A sampler that gives the pairs it holds, in order, each with the
-/// number 0.5.
+/// A sampler that gives the numbers and pairs it holds, in order: a
+/// number, then a pair.
 struct Scripted {
-    pairs: std::vec::IntoIter<Vec2>,
+    draws: std::vec::IntoIter<(f32, Vec2)>,
+    pair: Vec2,
 }
 
 impl Sampler for Scripted {
     fn start_pixel_sample(&mut self, _: (u32, u32), _: u32) {}
     fn get_1d(&mut self) -> f32 {
-        0.5
+        let (number, pair) = self.draws.next().expect("a scripted draw");
+        self.pair = pair;
+        number
     }
     fn get_2d(&mut self) -> Vec2 {
-        self.pairs.next().expect("a scripted pair")
+        self.pair
     }
 }
 
@@ -153,13 +156,14 @@ fn batched_environment_samples_are_the_samples_one_at_a_time() {
         let got = batched.estimate(&world, &point, &mut a);
         let mut b = IndependentSampler::from_stream(5, n as u64);
         let mut points = Scripted {
-            pairs: (0..n as usize)
+            draws: (0..n as usize)
                 .map(|k| {
-                    let (_, pair) = (b.get_1d(), b.get_2d());
-                    stratum_point(pair, k, n as usize)
+                    let (number, pair) = (b.get_1d(), b.get_2d());
+                    (number, stratum_point(pair, k, n as usize))
                 })
                 .collect::<Vec<_>>()
                 .into_iter(),
+            pair: Vec2::ZERO,
         };
         let mut sum = Rgb::ZERO;
         for _ in 0..n {
@@ -171,7 +175,7 @@ fn batched_environment_samples_are_the_samples_one_at_a_time() {
 }
 
 /// A sky of radiance 0.05 and a sun of 8 x 4 texels holding about 60 %
-/// of the map's light, 50 degrees from the zenith. (A sun of one texel
+/// of the map's light, about 53 degrees from the zenith. (A sun of one texel
 /// would do less for the strata: its bilinear radiance over cells of
 /// constant density varies more within the sun than the count of samples
 /// that find it does.)
@@ -187,11 +191,13 @@ fn sun_map() -> EnvironmentMap {
 
 /// Four map samples at a vertex in strata have the mean of four
 /// independent ones and, under a sun holding most of the light, less
-/// variance: independent samples find the sun a binomial number of times,
-/// strata two or three times in four. 20,000 estimates each at the
+/// variance: independent samples find the sun a binomial number of times
+/// (a variance of 0.95 here), strata a number that only the two strata
+/// its rows' ends cut can change (0.40). 20,000 estimates each at the
 /// floor's point, without MIS (whose light half alone is weighted by the
 /// count); measured: the strata's standard error 0.69 of the independent
-/// samples' (both known to 1 %). Checked to fail by hand: with the strata
+/// samples' (both known to 1 %), 0.71 with the strata's taken at its
+/// upper bound, as the test takes it. Checked to fail by hand: with the strata
 /// removed (`stratum_point` returning its pair) the ratio is 1; with `k`
 /// dropped (every sample in the first stratum) the means differ.
 #[test]
@@ -226,6 +232,9 @@ fn strata_lower_the_noise_of_a_sun_not_the_mean() {
     }));
     assert!(strata.mean > 0.0);
     assert_means_agree("strata vs independent", strata, independent, ALPHA);
-    let ratio = strata.held_se("strata") / independent.held_se("independent");
+    // The strata's error at its upper bound, the other's as estimated:
+    // the comparison leans against the claim.
+    independent.held_se("independent");
+    let ratio = strata.held_se("strata") / independent.se;
     assert!(ratio < 0.8, "standard error ratio {ratio}");
 }

@@ -127,14 +127,15 @@ impl DirectLights {
                 let mut total = Rgb::ZERO;
                 for (index, light) in lights.lit() {
                     let strategy = self.strategy(lights, index);
-                    // An environment map's samples in strata of its
-                    // rows (`sampling::strata`); an area light's count is
-                    // the course's `-l`, its samples independent.
+                    // An environment map's samples in strata of the
+                    // coordinate its rows are drawn from (`sampling::
+                    // strata`); an area light's count is the course's
+                    // `-l`, its samples independent.
                     let n = strategy.samples as usize;
-                    let strata = n > 1 && matches!(light, Light::Environment(_));
+                    let in_strata = n > 1 && matches!(light, Light::Environment(_));
                     let mut k = 0;
                     let mut sum = Rgb::ZERO;
-                    let mut left = strategy.samples as usize;
+                    let mut left = n;
                     while left > 0 {
                         // A batch's numbers are drawn in the order one
                         // sample at a time would draw them, so the image
@@ -146,7 +147,7 @@ impl DirectLights {
                         let prefetch = count > 1;
                         for number in &mut batch[..count] {
                             let (uc, u) = (sampler.get_1d(), sampler.get_2d());
-                            *number = (uc, if strata { stratum_point(u, k, n) } else { u });
+                            *number = (uc, if in_strata { stratum_point(u, k, n) } else { u });
                             k += 1;
                             if prefetch {
                                 light.prefetch_sample_guide(number.1);

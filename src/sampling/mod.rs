@@ -27,7 +27,8 @@
 //! [`crate::adaptive`]) overestimates the error, so it is conservative.
 //!
 //! [`PixelSampler`] is the one the renderer holds: an enum over the two,
-//! so that the integrator is compiled once.
+//! so that the integrator is compiled once. [`strata`] moves the several
+//! samples a vertex takes of an environment map into strata of their own.
 
 pub mod independent;
 pub mod sobol;

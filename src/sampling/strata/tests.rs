@@ -13,8 +13,8 @@ fn pairs(count: usize, seed: u64) -> Vec<Vec2> {
 // Every point lies in `[0, 1)^2`, keeps its `x`, and point `k` lies in the
 // `k`-th stratum of rows (to rounding on its edges), for any pair, the
 // largest below 1 included. So for any height `a` the points below it
-// number `floor(a n)` or `ceil(a n)`, which is what bounds a sun's share
-// of the samples. Fails with the stratum made `(k + y) n`, `k` dropped,
+// number `floor(a n)` or `ceil(a n)`: of an interval's count, only the
+// strata its two ends cut vary. Fails with the stratum made `(k + y) n`, `k` dropped,
 // or the clamp below 1 removed.
 #[test]
 fn each_point_lies_in_its_own_stratum() {
@@ -51,7 +51,6 @@ fn each_point_lies_in_its_own_stratum() {
 #[test]
 fn the_last_stratum_ends_just_below_one() {
     let top = 0.999_999_94f32;
-    assert_eq!(top, 1.0 - f32::EPSILON / 2.0);
     assert_eq!(stratum_point(Vec2::new(0.5, top), 3, 4).y, top);
 }
 
