@@ -31,7 +31,12 @@ the pixel, are lit or not); the course's scenes show the light as their
 emissive quad, Mitsuba as the light's rectangle. So the table also gives
 the efficiency over the pixels whose mean luminance is below 1 in both
 renders (the emitters left out), and compares the two renderers' mean
-radiance over those pixels (the last column: both are unbiased).
+radiance over those pixels (the last column: both are unbiased). The
+luminance is each render's median over the pixel and its 8 neighbours:
+an emitter is a region and keeps its pixels, while a firefly, one pixel
+that noise lifts above 1, would otherwise take that pixel out of the
+mask and with it the firefly's share of its renderer's error and mean
+(docs/10-performance.md: the held-out map).
 
 Needs Python with numpy and mitsuba (a venv: `pip install mitsuba numpy`,
 and `apt-get install -y libllvm19`), the Mitsuba tool
@@ -126,6 +131,16 @@ def read_rgb(path):
     return np.array(bitmap, dtype=np.float64)
 
 
+def median_3x3(image):
+    """Each pixel's median over itself and its 8 neighbours (edges repeated)."""
+    import numpy as np
+
+    padded = np.pad(image, 1, mode="edge")
+    h, w = image.shape
+    shifted = [padded[dy:dy + h, dx:dx + w] for dy in range(3) for dx in range(3)]
+    return np.median(np.stack(shifted), axis=0)
+
+
 def variance(a, b, mask=None):
     """Per-render variance from two independent renders: mean of (a - b)^2 / 2,
     over the pixels of `mask` if given."""
@@ -206,7 +221,7 @@ def main():
         t_ours, t_mi = statistics.median(ours_t), statistics.median(mi_t)
         ratio = (mi_var * t_mi) / (ours_var * t_ours)
         ours_mean, mi_mean = (ours[0] + ours[1]) / 2, mi_avg
-        mask = (luminance(ours_mean) < 1) & (luminance(mi_mean) < 1)
+        mask = (median_3x3(luminance(ours_mean)) < 1) & (median_3x3(luminance(mi_mean)) < 1)
         masked = (variance(*mitsuba, mask) * t_mi) / (variance(*ours, mask) * t_ours)
         bias = luminance(ours_mean)[mask].mean() / luminance(mi_mean)[mask].mean()
         print(f"| {name} (m={depth}) | {t_ours:.2f} | {ours_var:.3e} | {t_mi:.2f} | {mi_var:.3e} "
