@@ -133,22 +133,21 @@ impl DirectLights {
                     // `-l`, its samples independent.
                     let n = strategy.samples as usize;
                     let in_strata = n > 1 && matches!(light, Light::Environment(_));
-                    let mut k = 0;
                     let mut sum = Rgb::ZERO;
                     let mut left = n;
                     while left > 0 {
                         // A batch's numbers are drawn in the order one
                         // sample at a time would draw them, so the image
                         // is the same; their misses overlap.
-                        let count = left.min(BATCH);
+                        let (first, count) = (n - left, left.min(BATCH));
                         let mut batch = [(0.0, Vec2::ZERO); BATCH];
                         // One sample has no misses to overlap (and its
                         // sampling prefetches its own texels).
                         let prefetch = count > 1;
-                        for number in &mut batch[..count] {
+                        for (i, number) in batch[..count].iter_mut().enumerate() {
                             let (uc, u) = (sampler.get_1d(), sampler.get_2d());
+                            let k = first + i;
                             *number = (uc, if in_strata { stratum_point(u, k, n) } else { u });
-                            k += 1;
                             if prefetch {
                                 light.prefetch_sample_guide(number.1);
                             }

@@ -29,16 +29,15 @@
 
 use glam::Vec2;
 
+use crate::math::float::ONE_BELOW_ONE;
+
 /// Sample `k`'s pair (the module doc's `u_k`) of `n`, for `k < n` and
 /// `u` in `[0, 1)^2`.
 pub fn stratum_point(u: Vec2, k: usize, n: usize) -> Vec2 {
     // `(k + y) / n` rounds to 1 for `y` just below 1 in the last stratum
     // (`3 + 0.99999997` is 4 in `f32`); a sample's numbers stay below 1.
-    Vec2::new(u.x, ((k as f32 + u.y) / n as f32).min(ONE_BELOW))
+    Vec2::new(u.x, ((k as f32 + u.y) / n as f32).min(ONE_BELOW_ONE))
 }
-
-/// The largest `f32` below 1.
-const ONE_BELOW: f32 = 1.0 - f32::EPSILON / 2.0;
 
 #[cfg(test)]
 mod tests;

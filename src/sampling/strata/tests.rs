@@ -19,7 +19,7 @@ fn pairs(count: usize, seed: u64) -> Vec<Vec2> {
 #[test]
 fn each_point_lies_in_its_own_stratum() {
     let mut all = pairs(2000, 1);
-    all.extend([Vec2::ZERO, Vec2::splat(ONE_BELOW)]);
+    all.extend([Vec2::ZERO, Vec2::splat(ONE_BELOW_ONE)]);
     for n in 1..=16 {
         for &u in &all {
             for k in 0..n {
