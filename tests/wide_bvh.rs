@@ -14,7 +14,7 @@ use glam::Vec3;
 use pathtracer::bvh::wide::leaf::{RayShear, TrianglePack};
 use pathtracer::bvh::{BvhAccel, WideBvhAccel};
 use pathtracer::cli::drivers::{render_lighting, render_normals};
-use pathtracer::intersect::triangle::TriangleShape;
+use pathtracer::intersect::triangle::{TriangleHit, TriangleShape};
 use pathtracer::intersect::{Intersector, LinearScan, Ray, Shape, TriangleTest};
 use pathtracer::math::rng::{sampler, Sampler};
 use pathtracer::raygen::Camera;
@@ -57,32 +57,36 @@ fn random_triangle(rng: &mut Sampler, scale: f32) -> TriangleShape {
     TriangleShape::new(p0, p1, p2)
 }
 
+/// Case `case`: `n` random triangles at one of three scales, and a ray
+/// aimed at a random point, a vertex or a point on an edge of one of
+/// them, or shot along its plane; returns them with the scale.
+fn grazing_case(rng: &mut Sampler, case: usize, n: usize) -> (Vec<TriangleShape>, Ray, f32) {
+    let scale = [1e-3f32, 1.0, 1e3][case % 3];
+    let tris: Vec<TriangleShape> = (0..n).map(|_| random_triangle(rng, scale)).collect();
+    let origin = random_point(rng, -3.0 * scale, 3.0 * scale);
+    let t = &tris[rng.gen_range(0..n)];
+    let s: f32 = rng.gen();
+    let target = match case % 5 {
+        0 => random_point(rng, -scale, scale),
+        1 => t.p0,
+        2 => t.p1 + s * (t.p2 - t.p1),
+        3 => t.p0 + s * (t.p1 - t.p0),
+        _ => t.p2,
+    };
+    let (origin, dir) = if case % 7 == 6 {
+        let o = t.p0 + (t.p1 - t.p0) * 1.5 + (t.p2 - t.p0) * 0.25;
+        (o, (t.p0 + s * (t.p2 - t.p1) - o).normalize_or(Vec3::X))
+    } else {
+        (origin, (target - origin).normalize_or(Vec3::Z))
+    };
+    (tris, Ray::new(origin, dir), scale)
+}
+
 #[test]
 fn simd_triangle_test_equals_the_scalar_one_on_random_and_grazing_rays() {
     let mut rng = sampler(2013, 0);
     for case in 0..20_000 {
-        let scale = [1e-3f32, 1.0, 1e3][case % 3];
-        let n = 1 + case % 4;
-        let tris: Vec<TriangleShape> = (0..n).map(|_| random_triangle(&mut rng, scale)).collect();
-        let origin = random_point(&mut rng, -3.0 * scale, 3.0 * scale);
-        let t = &tris[rng.gen_range(0..n)];
-        let s: f32 = rng.gen();
-        // Aim at a random point, a vertex, a point on an edge, or shoot
-        // along the first triangle's plane.
-        let target = match case % 5 {
-            0 => random_point(&mut rng, -scale, scale),
-            1 => t.p0,
-            2 => t.p1 + s * (t.p2 - t.p1),
-            3 => t.p0 + s * (t.p1 - t.p0),
-            _ => t.p2,
-        };
-        let (origin, dir) = if case % 7 == 6 {
-            let o = t.p0 + (t.p1 - t.p0) * 1.5 + (t.p2 - t.p0) * 0.25;
-            (o, (t.p0 + s * (t.p2 - t.p1) - o).normalize_or(Vec3::X))
-        } else {
-            (origin, (target - origin).normalize_or(Vec3::Z))
-        };
-        let mut ray = Ray::new(origin, dir);
+        let (tris, mut ray, scale) = grazing_case(&mut rng, case, 1 + case % 4);
         assert_pack_equals_scalar(&tris, &ray, f32::INFINITY);
         ray.t_min = rng.gen_range(0.0..scale);
         assert_pack_equals_scalar(&tris, &ray, rng.gen_range(0.0..6.0 * scale));
@@ -112,6 +116,75 @@ fn simd_triangle_test_equals_the_scalar_one_where_edge_functions_vanish() {
             }
             let along = Ray::new(Vec3::new(-1.0, y, 0.0), Vec3::X);
             assert_pack_equals_scalar(&tris, &along, f32::INFINITY);
+        }
+    }
+}
+
+/// The packs of `triangles`, four lanes each, ids in order.
+fn packs_of(triangles: &[TriangleShape]) -> Vec<TrianglePack> {
+    let lanes: Vec<(u32, Shape)> = triangles
+        .iter()
+        .enumerate()
+        .map(|(i, &t)| (i as u32, Shape::Triangle(t)))
+        .collect();
+    lanes.chunks(4).map(TrianglePack::new).collect()
+}
+
+/// A leaf's packs tested two at a time in one AVX register give what
+/// testing them one after the other gives, to the bit: the same pack,
+/// the same lane (on a tie too: triangles copied into other lanes and
+/// packs, and rays through the shared edges of a grid, where two
+/// triangles report the same `t`), the same hit.
+#[cfg(target_arch = "x86_64")]
+#[test]
+fn packs_two_at_a_time_equal_packs_one_at_a_time() {
+    use pathtracer::bvh::wide::avx::Avx;
+    use pathtracer::bvh::wide::node::{NodeTest, Sse};
+    if !is_x86_feature_detected!("avx") {
+        return;
+    }
+    let key = |(pack, lane, h): (usize, usize, TriangleHit)| {
+        (pack, lane, [h.t, h.u, h.v].map(f32::to_bits))
+    };
+    let compare = |tris: &[TriangleShape], ray: &Ray, t_max: f32| {
+        let (packs, shear) = (packs_of(tris), RayShear::new(ray));
+        let one = Sse::packs_hit(&packs, &shear, t_max).map(key);
+        assert_eq!(
+            one,
+            Avx::packs_hit(&packs, &shear, t_max).map(key),
+            "{ray:?}"
+        );
+        one.is_some()
+    };
+    let mut rng = sampler(2014, 0);
+    let mut hits = 0;
+    for case in 0..20_000 {
+        let n = 1 + case % 16;
+        let (mut tris, mut ray, scale) = grazing_case(&mut rng, case, n);
+        if case % 2 == 0 {
+            tris[rng.gen_range(0..n)] = tris[rng.gen_range(0..n)];
+        }
+        hits += usize::from(compare(&tris, &ray, f32::INFINITY));
+        ray.t_min = rng.gen_range(0.0..scale);
+        compare(&tris, &ray, rng.gen_range(0.0..6.0 * scale));
+    }
+    assert!(hits > 5_000, "too few hits to compare: {hits}");
+    let grid: Vec<TriangleShape> = (0..12)
+        .map(|i| {
+            let c = |dx: f32, dy: f32| Vec3::new((i / 2 % 3) as f32 + dx, (i / 6) as f32 + dy, 0.0);
+            if i % 2 == 0 {
+                TriangleShape::new(c(0.0, 0.0), c(1.0, 0.0), c(1.0, 1.0))
+            } else {
+                TriangleShape::new(c(0.0, 0.0), c(1.0, 1.0), c(0.0, 1.0))
+            }
+        })
+        .collect();
+    for i in 0..=12 {
+        for j in 0..=8 {
+            let origin = Vec3::new(i as f32 * 0.25, j as f32 * 0.25, 1.0);
+            for dir in [Vec3::NEG_Z, Vec3::new(-0.0, 0.0, -1.0), Vec3::Z] {
+                compare(&grid, &Ray::new(origin, dir), f32::INFINITY);
+            }
         }
     }
 }

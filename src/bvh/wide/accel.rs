@@ -97,7 +97,7 @@ impl WideBvhAccel {
     /// The nearest hit in a leaf within `[ray.t_min, t_max]`: its pack,
     /// lane and hit.
     #[inline(always)]
-    fn leaf_hit(
+    fn leaf_hit<T: NodeTest>(
         &self,
         link: WideLink,
         ray: &Ray,
@@ -105,6 +105,21 @@ impl WideBvhAccel {
         mut t_max: f32,
     ) -> Option<LaneHit> {
         let simd = self.primitives.triangle_test == TriangleTest::Watertight;
+        if simd && !link.has_spheres() {
+            let packs = link.packs();
+            let first = packs.start;
+            let (offset, lane, h) = T::packs_hit(&self.wide.packs[packs], shear, t_max)?;
+            let hit = ShapeHit {
+                t: h.t,
+                u: h.u,
+                v: h.v,
+            };
+            return Some(LaneHit {
+                index: first + offset,
+                lane,
+                hit,
+            });
+        }
         let mut best = None;
         for index in link.packs() {
             let pack = &self.wide.packs[index];
@@ -153,7 +168,7 @@ impl WideBvhAccel {
         let shear = RayShear::new(ray);
         let mut best = None;
         self.wide.closest_hit::<T>(ray, |link, t_max| {
-            let found = self.leaf_hit(link, ray, &shear, t_max)?;
+            let found = self.leaf_hit::<T>(link, ray, &shear, t_max)?;
             if let Some((id, _)) = self.wide.packs[found.index].lane(found.lane) {
                 self.primitives.prefetch_shading(id);
             }
@@ -178,7 +193,7 @@ impl WideBvhAccel {
     fn any<T: NodeTest>(&self, ray: &Ray) -> bool {
         let shear = RayShear::new(ray);
         self.wide.any_hit::<T>(ray, |link| {
-            self.leaf_hit(link, ray, &shear, ray.t_max).is_some()
+            self.leaf_hit::<T>(link, ray, &shear, ray.t_max).is_some()
         })
     }
 

@@ -16,9 +16,11 @@
 
 use std::arch::x86_64::*;
 
+use super::avx_packs::intersect_pair;
+use super::leaf::{RayShear, TrianglePack};
 use super::node::{NodeTest, RayBoxes, WideNode};
-use super::ARITY;
-use crate::math::float::gamma;
+use super::{ARITY, WIDTH};
+use crate::intersect::triangle::TriangleHit;
 
 /// The node test with AVX. Only to be used where AVX is detected.
 pub struct Avx;
@@ -30,6 +32,31 @@ impl NodeTest for Avx {
         // `is_x86_feature_detected!("avx")` returned true
         // (`WideBvhAccel::avx`).
         unsafe { hit(node, ray, t_max) }
+    }
+
+    /// Two packs at a time ([`intersect_pair`]), the last one of an odd
+    /// count alone.
+    #[inline(always)]
+    fn packs_hit(
+        packs: &[TrianglePack],
+        ray: &RayShear,
+        mut t_max: f32,
+    ) -> Option<(usize, usize, TriangleHit)> {
+        let mut best = None;
+        let mut pairs = packs.chunks_exact(2);
+        for (i, pair) in pairs.by_ref().enumerate() {
+            // SAFETY: as above.
+            if let Some((lane, hit)) = unsafe { intersect_pair(&pair[0], &pair[1], ray, t_max) } {
+                t_max = hit.t;
+                best = Some((2 * i + lane / WIDTH, lane % WIDTH, hit));
+            }
+        }
+        if let [last] = pairs.remainder() {
+            if let Some((lane, hit)) = last.intersect(ray, t_max) {
+                best = Some((packs.len() - 1, lane, hit));
+            }
+        }
+        best
     }
 }
 
@@ -43,25 +70,30 @@ unsafe fn hit(node: &WideNode, ray: &RayBoxes, t_max: f32) -> (u32, [f32; ARITY]
     // A plane's two groups of four lanes: 32 contiguous bytes, aligned
     // (the node is 64-byte aligned and each plane 32 bytes long).
     let plane = |p: usize| _mm256_load_ps(node.planes[p].as_ptr() as *const f32);
-    let mut enter = _mm256_set1_ps(ray.t_min);
-    let mut exit = _mm256_set1_ps(f32::INFINITY);
-    for a in 0..3 {
+    let axis = |a: usize| {
         let o = _mm256_set1_ps(ray.origin[a].x);
         let inv = _mm256_set1_ps(ray.inv_dir[a].x);
+        let inv_far = _mm256_set1_ps(ray.inv_dir_far[a].x);
         let mut near = _mm256_mul_ps(_mm256_sub_ps(plane(ray.near[a]), o), inv);
-        let mut far = _mm256_mul_ps(_mm256_sub_ps(plane(ray.far[a]), o), inv);
+        let mut far = _mm256_mul_ps(_mm256_sub_ps(plane(ray.far[a]), o), inv_far);
         if ray.has_zero_direction {
             let nan = _mm256_cmp_ps::<_CMP_UNORD_Q>(near, near);
             near = _mm256_blendv_ps(near, _mm256_set1_ps(f32::NEG_INFINITY), nan);
             let nan = _mm256_cmp_ps::<_CMP_UNORD_Q>(far, far);
             far = _mm256_blendv_ps(far, _mm256_set1_ps(f32::INFINITY), nan);
         }
-        enter = _mm256_max_ps(enter, near);
-        exit = _mm256_min_ps(exit, far);
-    }
+        (near, far)
+    };
+    let (near_x, far_x) = axis(0);
+    let (near_y, far_y) = axis(1);
+    let (near_z, far_z) = axis(2);
+    let enter = _mm256_max_ps(
+        _mm256_max_ps(near_x, near_y),
+        _mm256_max_ps(near_z, _mm256_set1_ps(ray.t_min)),
+    );
     let exit = _mm256_min_ps(
-        _mm256_mul_ps(exit, _mm256_set1_ps(1.0 + 2.0 * gamma(3))),
-        _mm256_set1_ps(t_max),
+        _mm256_min_ps(far_x, far_y),
+        _mm256_min_ps(far_z, _mm256_set1_ps(t_max)),
     );
     let mask = _mm256_movemask_ps(_mm256_cmp_ps::<_CMP_LE_OQ>(enter, exit)) as u32;
     let mut entries = [0.0f32; ARITY];

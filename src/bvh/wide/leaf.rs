@@ -61,12 +61,12 @@ pub struct TrianglePack {
 #[derive(Clone, Copy, Debug)]
 pub struct RayShear {
     /// Source axes of the permuted x, y, z.
-    k: [usize; 3],
+    pub(super) k: [usize; 3],
     /// Ray origin, permuted, splatted.
-    origin: [Vec4; 3],
+    pub(super) origin: [Vec4; 3],
     /// `S_x, S_y, S_z`, splatted.
-    shear: [Vec4; 3],
-    t_min: f32,
+    pub(super) shear: [Vec4; 3],
+    pub(super) t_min: f32,
 }
 
 impl RayShear {
@@ -220,7 +220,7 @@ fn nearest_lane(hit: BVec4A, t: Vec4) -> Option<usize> {
 /// `a b - c d` in `f64` ([`edge_function`]), as the scalar test does.
 #[cold]
 #[inline(never)]
-fn recompute_zeros(e: Vec4, [a, b, c, d]: [Vec4; 4]) -> Vec4 {
+pub(super) fn recompute_zeros(e: Vec4, [a, b, c, d]: [Vec4; 4]) -> Vec4 {
     let [e, a, b, c, d] = [e, a, b, c, d].map(|v| v.to_array());
     Vec4::from_array(std::array::from_fn(|i| {
         if e[i] == 0.0 {

@@ -38,6 +38,8 @@
 pub mod accel;
 #[cfg(target_arch = "x86_64")]
 pub mod avx;
+#[cfg(target_arch = "x86_64")]
+pub mod avx_packs;
 pub mod collapse;
 pub mod leaf;
 pub mod node;

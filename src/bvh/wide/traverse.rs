@@ -47,13 +47,10 @@ impl WideBvh {
         if !traversable(ray) {
             return None;
         }
-        self.bounds.hit_distance(
-            ray.origin.into(),
-            (Vec3::ONE / ray.dir).into(),
-            ray.t_min,
-            ray.t_max,
-        )?;
-        let boxes = RayBoxes::new(ray.origin, ray.dir, ray.t_min);
+        let inv_dir = Vec3::ONE / ray.dir;
+        self.bounds
+            .hit_distance(ray.origin.into(), inv_dir.into(), ray.t_min, ray.t_max)?;
+        let boxes = RayBoxes::from_inverse(ray.origin, inv_dir, ray.t_min);
         let mut t_max = ray.t_max;
         let mut best = None;
         let mut stack: Stack<(WideLink, f32), STACK> = Stack::new();
@@ -90,16 +87,14 @@ impl WideBvh {
         if !traversable(ray) {
             return false;
         }
-        let inside = self.bounds.hit_distance(
-            ray.origin.into(),
-            (Vec3::ONE / ray.dir).into(),
-            ray.t_min,
-            ray.t_max,
-        );
+        let inv_dir = Vec3::ONE / ray.dir;
+        let inside =
+            self.bounds
+                .hit_distance(ray.origin.into(), inv_dir.into(), ray.t_min, ray.t_max);
         if inside.is_none() {
             return false;
         }
-        let boxes = RayBoxes::new(ray.origin, ray.dir, ray.t_min);
+        let boxes = RayBoxes::from_inverse(ray.origin, inv_dir, ray.t_min);
         let mut stack: Stack<WideLink, STACK> = Stack::new();
         stack.push(root);
         while let Some(link) = stack.pop() {
