@@ -1,20 +1,26 @@
-//! The wide tree from the binary one (Wald, Benthin and Boulos 2008,
-//! section 3; Dammertz et al. 2008 collapse the same way).
+//! The wide tree from the binary one: each wide node stands for a binary
+//! node, and its children for up to eight of that node's descendants
+//! which together hold every leaf below it once (a cut of its subtree).
 //!
-//! A wide node starts from a binary node's two children. While it has
-//! fewer than eight, the interior child with the largest surface area is
-//! replaced by its own two children: by the surface area heuristic the
-//! largest box is the one a ray most likely enters, so opening it saves
-//! the most node visits. Leaves stay leaves; each becomes ceil(n / 4)
-//! triangle packs. A binary subtree of at most [`MERGE`] primitives
-//! becomes one leaf too (the wide build makes such nodes leaves from the
-//! start: [`super::accel::binary_options`]), so a leaf has at most three
-//! packs.
+//! Which cut each wide node takes, and which small subtrees become one
+//! leaf, is [`super::grouping`]'s choice: the grouping of least expected
+//! cost by the surface area heuristic, solved exactly over the binary
+//! tree. (Before it, a greedy rule chose: open the interior child of
+//! largest area until the node has eight children (Wald, Benthin and
+//! Boulos 2008, section 3; Dammertz et al. 2008). It could not pull a
+//! leaf up past a node with room, so the nodes near the leaves were often
+//! half empty.)
+//!
+//! Leaves stay leaves; each becomes ceil(n / 4) triangle packs. A binary
+//! subtree of at most [`MERGE`] primitives and no sphere may become one
+//! leaf too (the wide build makes such nodes leaves from the start:
+//! [`super::accel::binary_options`]), so a leaf has at most three packs.
 //!
 //! Nodes are written depth first, a node before its children, like the
 //! binary tree. Collapsing never adds levels, so the depth limit of the
 //! binary tree holds for the wide one.
 
+use super::grouping::Grouping;
 use super::leaf::TrianglePack;
 use super::node::WideNode;
 use super::{WideBvh, WideLink, ARITY, WIDTH};
@@ -31,11 +37,12 @@ pub const MERGE: usize = 3 * WIDTH;
 /// The wide BVH over the same primitives as `bvh`; `shapes[id]` is
 /// primitive `id`'s shape.
 pub fn collapse(bvh: &Bvh, shapes: &[Shape]) -> WideBvh {
+    let sizes = subtree_sizes(bvh);
+    let spheres = subtree_spheres(bvh, shapes);
     let mut out = Collapser {
         bvh,
         shapes,
-        sizes: subtree_sizes(bvh),
-        spheres: subtree_spheres(bvh, shapes),
+        grouping: Grouping::solve(bvh, &sizes, &spheres),
         scratch: Vec::new(),
         // Upper bounds (a wide node takes at least one binary node, a pack
         // at least one primitive), so the vectors never grow and copy;
@@ -84,7 +91,7 @@ fn subtree_spheres(bvh: &Bvh, shapes: &[Shape]) -> Vec<bool> {
 }
 
 /// Number of primitives under each binary node.
-fn subtree_sizes(bvh: &Bvh) -> Vec<u32> {
+pub(super) fn subtree_sizes(bvh: &Bvh) -> Vec<u32> {
     let mut sizes = vec![0u32; bvh.nodes.len()];
     // Children come after their parent, so a reverse sweep sees them first.
     for index in (0..bvh.nodes.len()).rev() {
@@ -106,9 +113,7 @@ fn subtree_sizes(bvh: &Bvh) -> Vec<u32> {
 struct Collapser<'a> {
     bvh: &'a Bvh,
     shapes: &'a [Shape],
-    sizes: Vec<u32>,
-    /// Whether each binary node's subtree holds a sphere.
-    spheres: Vec<bool>,
+    grouping: Grouping,
     /// Reused list of a leaf's slots.
     scratch: Vec<u32>,
     nodes: Vec<WideNode>,
@@ -116,20 +121,8 @@ struct Collapser<'a> {
 }
 
 impl Collapser<'_> {
-    /// Whether `link` becomes a leaf: a binary leaf, or a small subtree of
-    /// triangles only. A sphere keeps its own binary leaf and its tight box:
-    /// its test is scalar and costly, so merged into a leaf of twelve it
-    /// would be tested by every ray that enters the leaf (measured on
-    /// `CBspheres_lambertian.dae`, where the spheres' scalar test was 11 %
-    /// of the render with them merged).
-    fn becomes_leaf(&self, link: Link) -> bool {
-        link.is_leaf()
-            || (self.sizes[link.first as usize] as usize <= MERGE
-                && !self.spheres[link.first as usize])
-    }
-
     fn link(&mut self, link: Link) -> WideLink {
-        if self.becomes_leaf(link) {
+        if self.grouping.is_leaf(link) {
             self.leaf(link)
         } else {
             self.node(link.first as usize)
@@ -149,44 +142,15 @@ impl Collapser<'_> {
 
     /// The wide node for binary node `index`, and its subtrees.
     fn node(&mut self, index: usize) -> WideLink {
-        let binary = &self.bvh.nodes[index];
-        let mut children = [(Aabb::EMPTY, Link::default()); ARITY];
-        children[0] = (binary.child_bounds(0), binary.children[0]);
-        children[1] = (binary.child_bounds(1), binary.children[1]);
-        // Each child's surface area if it can be opened, else -1.
-        let openable = |(bounds, link): (Aabb, Link)| {
-            if self.becomes_leaf(link) {
-                -1.0
-            } else {
-                bounds.surface_area()
-            }
-        };
-        let mut area = [-1.0f32; ARITY];
-        area[0] = openable(children[0]);
-        area[1] = openable(children[1]);
-        let mut n = 2;
-        while n < ARITY {
-            // The interior child with the largest surface area, if any.
-            let i = (0..n)
-                .max_by(|&a, &b| area[a].total_cmp(&area[b]))
-                .unwrap_or(0);
-            if area[i] < 0.0 {
-                break;
-            }
-            let grand = &self.bvh.nodes[children[i].1.first as usize];
-            children[i] = (grand.child_bounds(0), grand.children[0]);
-            children[n] = (grand.child_bounds(1), grand.children[1]);
-            area[i] = openable(children[i]);
-            area[n] = openable(children[n]);
-            n += 1;
-        }
+        let mut children = Vec::with_capacity(ARITY);
+        self.grouping.children(self.bvh, index, &mut children);
         let me = self.nodes.len();
         self.nodes.push(WideNode::new(&[]));
         let mut wide = [(Aabb::EMPTY, WideLink::EMPTY); ARITY];
-        for (slot, &(bounds, link)) in wide.iter_mut().zip(&children[..n]) {
+        for (slot, &(bounds, link)) in wide.iter_mut().zip(&children) {
             *slot = (bounds, self.link(link));
         }
-        self.nodes[me] = WideNode::new(&wide[..n]);
+        self.nodes[me] = WideNode::new(&wide[..children.len()]);
         WideLink {
             first: me as u32,
             count: 0,

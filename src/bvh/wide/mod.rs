@@ -41,6 +41,7 @@ pub mod avx;
 #[cfg(target_arch = "x86_64")]
 pub mod avx_packs;
 pub mod collapse;
+pub mod grouping;
 pub mod leaf;
 pub mod node;
 pub mod traverse;
