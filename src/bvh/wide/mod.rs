@@ -17,11 +17,13 @@
 //!   eight children stored plane by plane, two `Vec4` per plane, and eight
 //!   links) and the ray-versus-eight-boxes slab test (`avx`: the same
 //!   test in one 8-lane register where the processor has AVX; x86-64 only).
-//! - [`collapse`]: the wide tree from the binary SAH tree, pulling up
-//!   grandchildren by largest surface area until a node has eight children.
+//! - [`collapse`]: the wide tree from the binary SAH tree, each wide node
+//!   over a cut of up to eight of a binary node's descendants, chosen by
+//!   [`grouping`]: the cuts and leaves of least SAH cost, solved exactly.
 //! - [`leaf`]: triangles packed four to a [`TrianglePack`] (structure of
 //!   arrays), and the watertight test of
-//!   [`crate::intersect::triangle`] run on the four lanes at once.
+//!   [`crate::intersect::triangle`] run on the four lanes at once
+//!   (`avx_packs`: two packs in one AVX register, x86-64 only).
 //! - [`traverse`]: closest hit, front to back with a short stack; any hit.
 //! - [`validate`](WideBvh::validate): every primitive stored exactly once,
 //!   boxes hold their contents, depth bounded.
