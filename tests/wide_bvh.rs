@@ -159,7 +159,8 @@ fn packs_two_at_a_time_equal_packs_one_at_a_time() {
     let mut rng = sampler(2014, 0);
     let mut hits = 0;
     for case in 0..20_000 {
-        let n = 1 + case % 16;
+        // Two to four packs: at least one pair.
+        let n = 5 + case % 12;
         let (mut tris, mut ray, scale) = grazing_case(&mut rng, case, n);
         if case % 2 == 0 {
             tris[rng.gen_range(0..n)] = tris[rng.gen_range(0..n)];
@@ -179,6 +180,19 @@ fn packs_two_at_a_time_equal_packs_one_at_a_time() {
             }
         })
         .collect();
+    // Straight down onto the edge y = 1 shared by triangle 1 (pack 0,
+    // lane 1) and triangle 6 (pack 1, lane 2): both report t = 1, and the
+    // later pack wins, as when the packs are tested one after the other.
+    let edge = Ray::new(Vec3::new(0.5, 1.0, 1.0), Vec3::NEG_Z);
+    let (packs, shear) = (packs_of(&grid), RayShear::new(&edge));
+    let alone = packs[0].intersect(&shear, f32::INFINITY);
+    assert_eq!(alone.map(|(l, h)| (l, h.t)), Some((1, 1.0)), "the tie");
+    for found in [
+        Sse::packs_hit(&packs, &shear, f32::INFINITY),
+        Avx::packs_hit(&packs, &shear, f32::INFINITY),
+    ] {
+        assert_eq!(found.map(|(p, l, h)| (p, l, h.t)), Some((1, 2, 1.0)));
+    }
     for i in 0..=12 {
         for j in 0..=8 {
             let origin = Vec3::new(i as f32 * 0.25, j as f32 * 0.25, 1.0);

@@ -31,6 +31,16 @@ pub struct ShapeHit {
     pub v: f32,
 }
 
+impl From<super::triangle::TriangleHit> for ShapeHit {
+    fn from(h: super::triangle::TriangleHit) -> Self {
+        ShapeHit {
+            t: h.t,
+            u: h.u,
+            v: h.v,
+        }
+    }
+}
+
 /// Which ray-triangle test to use.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum TriangleTest {
@@ -61,11 +71,7 @@ impl Shape {
                     TriangleTest::Watertight => tri.intersect(ray, t_max),
                     TriangleTest::MollerTrumbore => moller_trumbore(tri, ray, t_max),
                 };
-                hit.map(|h| ShapeHit {
-                    t: h.t,
-                    u: h.u,
-                    v: h.v,
-                })
+                hit.map(ShapeHit::from)
             }
             Shape::Sphere(s) => s
                 .intersect(ray, t_max)

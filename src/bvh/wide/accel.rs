@@ -108,29 +108,20 @@ impl WideBvhAccel {
         if simd && !link.has_spheres() {
             let packs = link.packs();
             let first = packs.start;
-            let (offset, lane, h) = T::packs_hit(&self.wide.packs[packs], shear, t_max)?;
-            let hit = ShapeHit {
-                t: h.t,
-                u: h.u,
-                v: h.v,
-            };
+            let (offset, lane, hit) = T::packs_hit(&self.wide.packs[packs], shear, t_max)?;
             return Some(LaneHit {
                 index: first + offset,
                 lane,
-                hit,
+                hit: hit.into(),
             });
         }
         let mut best = None;
         for index in link.packs() {
             let pack = &self.wide.packs[index];
             if simd {
-                if let Some((lane, h)) = pack.intersect(shear, t_max) {
-                    t_max = h.t;
-                    let hit = ShapeHit {
-                        t: h.t,
-                        u: h.u,
-                        v: h.v,
-                    };
+                if let Some((lane, hit)) = pack.intersect(shear, t_max) {
+                    t_max = hit.t;
+                    let hit = hit.into();
                     best = Some(LaneHit { index, lane, hit });
                 }
             }

@@ -112,8 +112,9 @@ mod tests {
     use crate::intersect::Aabb;
     use crate::math::rng::sampler;
 
-    /// Random boxes and rays, some with zero direction components and
-    /// origins on planes: both tests give the same mask and distances.
+    /// Random boxes and rays, some with zero (±0) or tiny direction
+    /// components, origins on planes, `t_min` above 0: both tests give the
+    /// same mask and distances.
     #[test]
     fn avx_and_sse_agree_bit_for_bit() {
         if !is_x86_feature_detected!("avx") {
@@ -136,10 +137,21 @@ mod tests {
                 rng.gen::<f32>() - 0.5,
                 rng.gen::<f32>() - 0.5,
             );
-            if rng.gen::<u32>() % 3 == 0 {
-                dir[rng.gen::<u32>() as usize % 3] = 0.0;
+            // Zero components of either sign, and ones so small that the
+            // reciprocal is finite but the far factor makes it infinite.
+            let axis = rng.gen::<u32>() as usize % 3;
+            match rng.gen::<u32>() % 6 {
+                0 => dir[axis] = 0.0,
+                1 => dir[axis] = -0.0,
+                2 => dir[axis] = 2.938_737e-39 * dir[axis].signum(),
+                _ => {}
             }
-            let ray = RayBoxes::new(origin, dir, 0.0);
+            let t_min = if rng.gen::<bool>() {
+                0.0
+            } else {
+                rng.gen::<f32>() * 2.0
+            };
+            let ray = RayBoxes::new(origin, dir, t_min);
             let t_max = if rng.gen::<u32>() % 2 == 0 {
                 f32::INFINITY
             } else {

@@ -14,8 +14,9 @@
 //! The nearest of the eight hits is the one the two packs tested one
 //! after the other would give: there, `b` is tested with `t_max` lowered
 //! to `a`'s hit and replaces it when `t_b <= t_a`, so on a tie the lane
-//! in `b` wins; within a pack, the lowest lane among equal `t` wins. A
-//! unit test compares the two on random and grazing rays.
+//! in `b` wins; within a pack, the lowest lane among equal `t` wins.
+//! `tests/wide_bvh.rs` compares the two on random and grazing rays and
+//! on a tie across packs.
 
 use std::arch::x86_64::*;
 

@@ -23,13 +23,13 @@
 //! where the spheres' scalar test was 11 % of the render with them
 //! merged). Solved bottom up (children come after their parent in
 //! [`Bvh::nodes`]), eight values per binary node, in about 4 ms for the
-//! benchmark's 240k binary nodes.
+//! benchmark's 122k interior binary nodes.
 //!
 //! The greedy collapse this replaces opened the child of largest area
 //! until a node had eight children. It could not pull a leaf up past a
 //! node that had room, so the wide nodes near the leaves were often half
 //! empty: on the benchmark's sphere, 3.9 children a node, where the
-//! grouping finds 6.0 (41,068 nodes become 24,263; primary rays +2.5-3 %,
+//! grouping finds 6.0 (41,068 nodes become 24,263; primary rays +2.3 %,
 //! random rays +6-14 %: `docs/maintainers/wide-bvh.md`, round 10).
 
 use super::collapse::MERGE;
@@ -190,6 +190,17 @@ mod tests {
         }
     }
 
+    /// Whether a primitive marked in `sphere` lies under `link`.
+    fn holds_sphere(bvh: &Bvh, link: Link, sphere: &[bool]) -> bool {
+        if link.is_leaf() {
+            return link
+                .slots()
+                .any(|slot| sphere[bvh.order[slot as usize] as usize]);
+        }
+        let node = &bvh.nodes[link.first as usize];
+        node.children.iter().any(|&c| holds_sphere(bvh, c, sphere))
+    }
+
     fn children(bvh: &Bvh, link: Link) -> [(Aabb, Link); 2] {
         let node = &bvh.nodes[link.first as usize];
         [0, 1].map(|c| (node.child_bounds(c), node.children[c]))
@@ -215,13 +226,13 @@ mod tests {
     /// The least cost of the subtree as one child, by trying every
     /// grouping: a leaf where allowed, or a node over any cut of at most
     /// eight of its descendants, each of those at its least cost.
-    fn brute_force(bvh: &Bvh, (bounds, link): (Aabb, Link), merge: bool) -> f32 {
+    fn brute_force(bvh: &Bvh, (bounds, link): (Aabb, Link), sphere: &[bool]) -> f32 {
         let area = bounds.surface_area();
         let n = size(bvh, link);
         if link.is_leaf() {
             return leaf_cost(area, n);
         }
-        let leaf = if merge && n as usize <= MERGE {
+        let leaf = if n as usize <= MERGE && !holds_sphere(bvh, link, sphere) {
             leaf_cost(area, n)
         } else {
             f32::INFINITY
@@ -231,7 +242,11 @@ mod tests {
         for a in &left {
             for b in &right {
                 if a.len() + b.len() <= ARITY {
-                    let below: f32 = a.iter().chain(b).map(|&c| brute_force(bvh, c, merge)).sum();
+                    let below: f32 = a
+                        .iter()
+                        .chain(b)
+                        .map(|&c| brute_force(bvh, c, sphere))
+                        .sum();
                     node = node.min(area * NODE_COST + below);
                 }
             }
@@ -254,21 +269,21 @@ mod tests {
             })
     }
 
-    /// Random boxes in binary trees of 2 to 24 leaves of one primitive,
-    /// where subtrees of up to twelve may merge into a leaf, and where
-    /// none may (as if each held a sphere): the grouping's cost is the
-    /// least over every grouping, and no node has more than eight
-    /// children.
+    /// Random boxes (2 to 27) in binary trees with leaves of one to three
+    /// primitives, with no sphere, some spheres, or spheres only (a
+    /// subtree of up to twelve primitives and no sphere may merge into a
+    /// leaf): the grouping's cost is the least over every grouping, and no
+    /// node has more than eight children.
     #[test]
     fn the_grouping_is_the_cheapest_of_all() {
         let mut rng = sampler(2017, 0);
         let options = BuildOptions {
-            max_leaf_size: 1,
+            max_leaf_size: 3,
             leaf_at_most: 0,
-            ..BuildOptions::default()
+            traversal_cost: 0.5,
         };
-        for case in 0..92 {
-            let n = 2 + case / 2 % 23;
+        for case in 0..96 {
+            let n = 2 + case / 3 % 26;
             let boxes: Vec<Aabb> = (0..n)
                 .map(|_| {
                     let c = Vec3::new(rng.gen(), rng.gen(), rng.gen()) * 10.0;
@@ -276,13 +291,26 @@ mod tests {
                     Aabb::from_points([c, c + e])
                 })
                 .collect();
+            let share = [0.0, 0.3, 1.0][case % 3];
+            let sphere: Vec<bool> = (0..n).map(|_| rng.gen::<f32>() < share).collect();
             let bvh = build(&boxes, &options);
             let root = (bvh.bounds, bvh.root.expect("a tree"));
             let sizes = subtree_sizes(&bvh);
-            let merge = case % 2 == 0;
-            let grouping = Grouping::solve(&bvh, &sizes, &vec![!merge; bvh.nodes.len()]);
+            let spheres: Vec<bool> = (0..bvh.nodes.len())
+                .map(|i| {
+                    holds_sphere(
+                        &bvh,
+                        Link {
+                            first: i as u32,
+                            count: 0,
+                        },
+                        &sphere,
+                    )
+                })
+                .collect();
+            let grouping = Grouping::solve(&bvh, &sizes, &spheres);
             let (cost, widest) = grouped(&bvh, &grouping, root);
-            let best = brute_force(&bvh, root, merge);
+            let best = brute_force(&bvh, root, &sphere);
             assert!(widest <= ARITY, "a node of {widest} children");
             assert!(
                 (cost - best).abs() <= 1e-4 * best,

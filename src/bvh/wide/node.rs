@@ -14,7 +14,7 @@
 //! direction, so no min/max is needed per axis:
 //!
 //! ```text
-//! r_a    = 1 / d_a,  r'_a = r_a (1 + 2 gamma(3))
+//! r_a    = 1 / d_a,  r'_a = r_a F,  F = 1 + 8u    (u = 2^-24, the unit roundoff)
 //! near_a = (planes[near(a)] - o_a) r_a     near(a) = a if d_a >= +0, else 3 + a
 //! far_a  = (planes[far(a)]  - o_a) r'_a    far(a)  = the other one
 //! enter  = max(max(near_x, near_y), max(near_z, t_min))
@@ -22,22 +22,25 @@
 //! hit    <=> enter <= exit
 //! ```
 //!
-//! The factor `1 + 2 gamma(3)` keeps the test conservative under rounding
-//! (pbrt-v4, section 6.8.2): a computed slab distance carries three
-//! roundings (the difference, the reciprocal, the product), so it is
-//! within a factor `1 ± gamma(3)` of the exact one, and a far distance
-//! scaled by `1 + 2 gamma(3)` is never below a near one the exact
-//! distances put before it. pbrt scales each far distance, a fourth
-//! rounding; here the factor is folded into the reciprocal once per ray,
-//! where its rounding is again the fourth of four, so the bound
-//! `(1 ± u)^4 (1 + 2 gamma(3))` is the same and the test as conservative.
-//! It takes a multiplication off the path from a node's load to its mask,
-//! the path one ray's traversal waits on; so do the pairwise maxima and
-//! minima, two levels instead of a chain of three. No operand is NaN (a
-//! zero direction component's NaN is replaced first, below), so their
-//! order does not change the result. Together: primary rays +6 % on the
-//! benchmark (`docs/maintainers/wide-bvh.md`). The hits do not change:
-//! the test only decides which boxes are opened, and a box holding a hit
+//! The factor `F` keeps the test conservative under rounding (the idea
+//! of pbrt-v4, section 6.8.2, with a bound of its own): a computed near
+//! distance carries three roundings (the difference, the reciprocal, the
+//! product), so it is at most `(1 + u)^3` times the exact one; a far
+//! distance carries four (`F` is folded into the reciprocal once per
+//! ray, rounded), so it is at least `(1 - u)^4 F` times the exact one.
+//! With `F = 1 + 8u` (exact in `f32`), `(1 - u)^4 F > (1 + u)^3`, so a box
+//! the exact ray enters is entered by the computed one too, whichever
+//! axes give its entry and exit (barring underflow). pbrt multiplies each
+//! far distance by `1 + 2 gamma(3)`, about `1 + 6u`, at every box, which
+//! covers the same four roundings only to first order. Folding the factor
+//! into the reciprocal takes a multiplication off the path from a node's
+//! load to its mask, the path one ray's traversal waits on; so do the
+//! pairwise maxima and minima, two levels instead of a chain of three. No
+//! operand is NaN (a zero direction component's NaN is replaced first,
+//! below), so their order changes no comparison (at most the sign of a
+//! zero entry distance). Together: primary rays +7 % on the benchmark
+//! (`docs/maintainers/wide-bvh.md`, round 10). The hits do not change: the
+//! test only decides which boxes are opened, and a box holding a hit
 //! within `[t_min, t_max]` is opened either way.
 //!
 //! An unused slot has the empty box (`min = +inf`, `max = -inf`): with
@@ -59,7 +62,9 @@ use super::leaf::{RayShear, TrianglePack};
 use super::{WideLink, ARITY};
 use crate::intersect::triangle::TriangleHit;
 use crate::intersect::Aabb;
-use crate::math::float::gamma;
+
+/// `F = 1 + 8u`, the far distances' factor (see the module doc).
+pub const FAR_FACTOR: f32 = 1.0 + 4.0 * f32::EPSILON;
 
 /// An interior node of the wide BVH: its children's boxes, plane by plane,
 /// and the links to them.
@@ -100,8 +105,9 @@ impl RayBoxes {
     pub fn from_inverse(origin: Vec3, inv: Vec3, t_min: f32) -> Self {
         let near = [0, 1, 2].map(|a| if inv[a].is_sign_negative() { 3 + a } else { a });
         // Infinite where `inv` is, and where `inv` is within the factor
-        // of `f32::MAX` (a subnormal component): both get the NaN check.
-        let inv_far = inv * (1.0 + 2.0 * gamma(3));
+        // of `f32::MAX` (a component just above 2^-128: its reciprocal is
+        // finite, `F` times it is not); both get the NaN check.
+        let inv_far = inv * FAR_FACTOR;
         RayBoxes {
             origin: [origin.x, origin.y, origin.z].map(Vec4::splat),
             inv_dir: [inv.x, inv.y, inv.z].map(Vec4::splat),
