@@ -64,13 +64,100 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 
+
+
+def with_material(effect, material):
+    """Makes a copy of a scene in `out` whose effect `effect` carries
+    `material` (a CGL `<extra>`), put after the effect's `profile_COMMON`."""
+    def make(scene, out):
+        with open(scene) as f:
+            text = f.read()
+        start = text.index(f'<effect id="{effect}"')
+        end = text.index("</profile_COMMON>", start) + len("</profile_COMMON>")
+        path = os.path.join(out, os.path.basename(scene).replace(".dae", f"-{effect}.dae"))
+        with open(path, "w") as f:
+            f.write(text[:end] + material + text[end:])
+        return path
+    return make
+
+
+def subdivided(geometry, n):
+    """Makes a copy of a scene in `out` whose mesh `geometry` (a triangle
+    `<polylist>` with a VERTEX and a NORMAL input) has each triangle cut
+    into n^2 in its plane: the points (i A + j B + k C) / n, i + j + k = n,
+    the normals interpolated the same way and normalised. A point is keyed
+    by its weights on the original vertices' indices, so the triangles on
+    either side of an edge share its new vertices bit for bit (the mesh
+    stays watertight), and the surface is the original one."""
+    def make(scene, out):
+        with open(scene) as f:
+            text = f.read()
+        start = text.index(f'<geometry id="{geometry}"')
+        end = text.index("</geometry>", start)
+        mesh = text[start:end]
+        arrays = re.findall(r'<float_array id="([^"]+)" count="\d+">([^<]*)</float_array>', mesh)
+        floats = {name: [float(x) for x in values.split()] for name, values in arrays}
+        positions = floats[f"{geometry}-positions-array"]
+        normals = floats[f"{geometry}-normals-array"]
+        corners = [int(x) for x in re.search(r"<p>([^<]*)</p>", mesh).group(1).split()]
+        new_points, new_normals, index_of, faces = [], [], {}, []
+
+        def point(table, source, weights, out_list):
+            key = (id(table),) + tuple(sorted((v, w) for v, w in weights if w))
+            if key not in index_of:
+                index_of[key] = len(out_list)
+                value = [sum(w * source[3 * v + a] for v, w in key[1:]) / n for a in range(3)]
+                if table is new_normals:
+                    norm = sum(c * c for c in value) ** 0.5
+                    value = [c / norm for c in value]
+                out_list.append(value)
+            return index_of[key]
+
+        for f in range(len(corners) // 6):
+            vs = corners[6 * f:6 * f + 6:2]
+            ns = corners[6 * f + 1:6 * f + 6:2]
+
+            def corner(i, j):
+                k = n - i - j
+                weights = list(zip(vs, (i, j, k)))
+                p = point(new_points, positions, weights, new_points)
+                q = point(new_normals, normals, list(zip(ns, (i, j, k))), new_normals)
+                return p, q
+            for i in range(n):
+                for j in range(n - i):
+                    faces.append((corner(i, j), corner(i + 1, j), corner(i, j + 1)))
+                    if i + j < n - 1:
+                        faces.append((corner(i + 1, j), corner(i + 1, j + 1), corner(i, j + 1)))
+        flat = lambda rows: " ".join(f"{x:.9g}" for row in rows for x in row)
+        mesh = re.sub(rf'(<float_array id="{geometry}-positions-array" count=")\d+(">)[^<]*',
+                      lambda m: f"{m.group(1)}{3 * len(new_points)}{m.group(2)}{flat(new_points)}",
+                      mesh)
+        mesh = re.sub(rf'(<float_array id="{geometry}-normals-array" count=")\d+(">)[^<]*',
+                      lambda m: f"{m.group(1)}{3 * len(new_normals)}{m.group(2)}{flat(new_normals)}",
+                      mesh)
+        mesh = re.sub(r'(<source id="[^"]+-positions">.*?<accessor [^>]*count=")\d+',
+                      lambda m: f"{m.group(1)}{len(new_points)}", mesh, flags=re.S)
+        mesh = re.sub(r'(<source id="[^"]+-normals">.*?<accessor [^>]*count=")\d+',
+                      lambda m: f"{m.group(1)}{len(new_normals)}", mesh, flags=re.S)
+        mesh = re.sub(r'(<polylist [^>]*count=")\d+', lambda m: f"{m.group(1)}{len(faces)}", mesh)
+        mesh = re.sub(r"<vcount>[^<]*</vcount>", "<vcount>" + " ".join(["3"] * len(faces))
+                      + "</vcount>", mesh)
+        mesh = re.sub(r"<p>[^<]*</p>", "<p>" + " ".join(
+            f"{p} {q}" for face in faces for p, q in face) + "</p>", mesh)
+        path = os.path.join(out, os.path.basename(scene).replace(".dae", f"-x{n * n}.dae"))
+        with open(path, "w") as f:
+            f.write(text[:start] + mesh + text[end:])
+        return path
+    return make
+
+
 # A rough copper (Beckmann, alpha 0.2; eta and k of copper at about
 # 614 / 549 / 466 nm, as the course's own microfacet scenes give them per channel).
 COPPER = """<extra><technique profile="CGL"><microfacet><alpha>0.2</alpha>
 <eta>0.27105 0.67693 1.31640</eta><k>3.60920 2.62480 2.29210</k></microfacet></technique></extra>"""
 
 # name: (course file, course depth -m, environment map or None,
-#        (effect id, CGL material) to put in the file or None)
+#        a change to the file (`make(scene, out)` writes the changed copy) or None)
 SCENES = {
     "CBspheres_lambertian": ("CBspheres_lambertian.dae", 8, None, None),
     "CBbunny": ("CBbunny.dae", 5, None, None),
@@ -83,10 +170,13 @@ SCENES = {
     "CBspheres": ("CBspheres.dae", 5, None, None),
     "teapot+studio": ("teapot.dae", 5, "studio.hdr", None),
     # Outdoor maps the sampler was not tuned on (`environment_map --sky`).
-    "copper_bunny+sky2k": ("bunny_unlit.dae", 5, "sky-2k.hdr", ("Default-effect", COPPER)),
-    "copper_bunny+sun2k": ("bunny_unlit.dae", 5, "sun-2k.hdr", ("Default-effect", COPPER)),
+    "copper_bunny+sky2k": ("bunny_unlit.dae", 5, "sky-2k.hdr", with_material("Default-effect", COPPER)),
+    "copper_bunny+sun2k": ("bunny_unlit.dae", 5, "sun-2k.hdr", with_material("Default-effect", COPPER)),
     "copper_bunny+sun4k_black": ("bunny_unlit.dae", 5, "sun-4k-black.hdr",
-                                 ("Default-effect", COPPER)),
+                                 with_material("Default-effect", COPPER)),
+    # A large mesh in the box (issue 24's "200k triangles", run at
+    # `--spp 16`): CBbunny's 28,576 triangles each cut into 9, 257,184.
+    "CBbunny_257k": ("CBbunny.dae", 5, None, subdivided("Mesh-mesh", 3)),
     "teapot+sun2k": ("teapot.dae", 5, "sun-2k.hdr", None),
 }
 # The scenes run when neither --only nor --scene is given.
@@ -98,19 +188,6 @@ MAP_COMMANDS = {
     "sun-2k.hdr": "--sky sun-2k.hdr --sun-degrees 0.27",
     "sun-4k-black.hdr": "--sky sun-4k-black.hdr --height 2048 --sun-degrees 0.27 --black-ground",
 }
-
-
-def with_material(scene, effect, material, out):
-    """A copy of `scene` in `out` whose effect `effect` carries `material`
-    (a CGL `<extra>`), put after the effect's `profile_COMMON`."""
-    with open(scene) as f:
-        text = f.read()
-    start = text.index(f'<effect id="{effect}"')
-    end = text.index("</profile_COMMON>", start) + len("</profile_COMMON>")
-    path = os.path.join(out, os.path.basename(scene).replace(".dae", f"-{effect}.dae"))
-    with open(path, "w") as f:
-        f.write(text[:end] + material + text[end:])
-    return path
 
 
 def run(cmd, log):
@@ -184,10 +261,10 @@ def main():
     if a.scene:
         SCENES["custom"] = (os.path.abspath(a.scene), a.depth, a.env and os.path.abspath(a.env), None)
     for name in ["custom"] if a.scene else a.only or DEFAULT:
-        file, depth, env, material = SCENES[name]
+        file, depth, env, change = SCENES[name]
         scene = os.path.join(a.scenes, file)
-        if material:
-            scene = with_material(scene, *material, a.out)
+        if change:
+            scene = change(scene, a.out)
         if env:
             env = os.path.join(a.maps, env)
             if not os.path.exists(env):
