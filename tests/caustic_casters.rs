@@ -1,8 +1,8 @@
 //! Caustic casters (`world::casters`) change the variance, not the mean:
 //! the path tracer with and without them agrees (two-sample z-tests) on
-//! floors lit through mirror, glass and conductor spheres, with the
-//! cones' share in both multiple importance sampling weights, and it is
-//! less noisy where the spheres throw caustics. One more test, without
+//! floors lit through mirror, glass and conductor spheres and a mirror
+//! mesh, with the cones' share in both multiple importance sampling
+//! weights, and it is less noisy where they throw caustics. One more test, without
 //! statistics, holds where the continuation's branches meet and where a
 //! cone's direction ends the path.
 //!
@@ -128,6 +128,80 @@ fn caustic_casters_keep_the_light_samples_weights_whole() {
         (200_000, 90),
         "LIGHT WEIGHTS: floor under a light",
     );
+}
+
+/// A mirror-like mesh casts too, from the sphere around it
+/// (`casters::meshes`): the first test's floor and light with a mirror
+/// ball of 288 flat facets where its conductor sphere stood, at the
+/// point beside it where its light falls, and at one between it and the
+/// light; with and without casters agree (two-sample z-tests), and
+/// casters lower the noise. The standard errors' ratios were 0.37 and
+/// 0.61 when written (without light images, which a mesh does not show).
+/// Checked by hand: weighting the continuation by the BSDF's density
+/// alone fails here too (the mean moves by 37 standard errors).
+#[test]
+fn a_mirror_mesh_casts_from_the_sphere_around_it() {
+    let mut b = SceneBuilder::new();
+    let floor = b.material(diffuse(0.6));
+    let mirror = b.material(Material::Mirror {
+        reflectance: Vec3::ONE,
+    });
+    b.floor(floor, 4.0).light(rect_light(
+        10.0,
+        Vec3::new(0.0, 2.0, 0.0),
+        -Vec3::Y,
+        0.8,
+        0.6,
+    ));
+    faceted_ball(&mut b, Vec3::new(1.2, 0.4, 0.0), 0.4, mirror);
+    let scene = b.finish();
+    let targets = [Vec3::new(2.2, 0.0, 1.0), Vec3::new(0.5, 0.0, 0.5)];
+    let eye = Vec3::new(0.0, 1.5, 3.0);
+    let pairs = casters_off_and_on(
+        &scene,
+        1,
+        3,
+        (eye, &targets),
+        (1_000_000, 110),
+        "RATIO: floor beside a mirror ball of facets",
+    );
+    for ((off, on), target) in pairs.into_iter().zip(targets) {
+        assert!(
+            on.se < 0.85 * off.se,
+            "towards {target}: a mirror mesh's caster should lower the noise of its caustic: \
+             standard error {:.5} with, {:.5} without",
+            on.se,
+            off.se
+        );
+    }
+}
+
+/// A ball of flat triangles: 12 rings of 24 quads between the poles
+/// (the rings at the poles are triangles), its vertices on the sphere.
+fn faceted_ball(b: &mut SceneBuilder, center: Vec3, radius: f32, material: u32) {
+    let (rings, segments) = (12, 24);
+    let point = |i: u32, j: u32| {
+        let theta = std::f32::consts::PI * i as f32 / rings as f32;
+        let phi = std::f32::consts::TAU * j as f32 / segments as f32;
+        center
+            + radius
+                * Vec3::new(
+                    theta.sin() * phi.cos(),
+                    theta.cos(),
+                    theta.sin() * phi.sin(),
+                )
+    };
+    for i in 0..rings {
+        for j in 0..segments {
+            let (a, c) = (point(i, j), point(i + 1, j + 1));
+            if i > 0 {
+                b.triangle(material, [a, point(i, j + 1), c]);
+            }
+            if i + 1 < rings {
+                b.triangle(material, [a, c, point(i + 1, j)]);
+            }
+        }
+    }
 }
 
 /// The path tracer (light sampling with MIS, depth `depth`, no roulette)

@@ -213,10 +213,11 @@ pub struct CourseArgs {
 
     /// Caustic casters: at diffuse surfaces, draw a quarter of the path's
     /// directions towards the scene's smooth spheres (mirror, glass,
-    /// conductors with alpha <= 0.3) and the lights' images in the
-    /// mirror-like ones, weighted so the image's expectation is unchanged
-    /// (`auto`, the default), towards the spheres alone (`spheres`), or
-    /// none (`off`, the course's).
+    /// conductors with alpha <= 0.3), the spheres around its mirror-like
+    /// meshes and the lights' images in the mirror-like spheres, weighted
+    /// so the image's expectation is unchanged (`auto`, the default),
+    /// towards the spheres alone (`spheres`), or none (`off`, the
+    /// course's).
     #[arg(long, value_enum, value_name = "RULE", default_value_t = CastersArg::Auto)]
     pub casters: CastersArg,
 

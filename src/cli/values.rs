@@ -281,10 +281,10 @@ impl From<RouletteArg> for Roulette {
 /// `--casters`: the command line's names of the [`CasterRule`]s.
 #[derive(clap::ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum CastersArg {
-    /// Diffuse surfaces sample towards the scene's smooth spheres and the lights' images in the mirror-like ones too (the default).
+    /// Diffuse surfaces sample towards the scene's smooth spheres, the spheres around its mirror-like meshes, and the lights' images in the mirror-like spheres too (the default).
     #[default]
     Auto,
-    /// Towards the smooth spheres, without the light images.
+    /// Towards the smooth spheres and mirror-like meshes, without the light images.
     Spheres,
     /// Diffuse surfaces sample their BSDF alone (the course's).
     Off,

@@ -33,7 +33,8 @@
 //! which the path chose the direction.
 //!
 //! A caster is a sphere whose material is a delta BSDF (mirror, glass,
-//! refraction) or a conductor with `alpha <= SMOOTH_ALPHA`. It is
+//! refraction) or a conductor with `alpha <= SMOOTH_ALPHA`, or the sphere
+//! that bounds a mirror-like mesh's triangles ([`meshes`]). It is
 //! eligible at a vertex when the vertex is outside it and it is not
 //! wholly below the vertex's tangent plane; both depend on the vertex
 //! alone, so sampling and density agree. Only diffuse BSDFs mix: a glossy
@@ -58,6 +59,7 @@
 pub mod cone;
 pub mod cones;
 pub mod images;
+pub mod meshes;
 
 pub use cone::Cone;
 pub use cones::Cones;
@@ -94,18 +96,20 @@ pub const MAX_CONES: usize = MAX_CASTERS + 4;
 /// Whether a render samples towards caustic casters (`--casters`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum CasterRule {
-    /// The scene's smooth spheres, up to [`MAX_CASTERS`], and the light
-    /// images in the mirror-like ones.
+    /// The scene's smooth spheres and mirror-like meshes, up to
+    /// [`MAX_CASTERS`] in all, and the light images in the mirror-like
+    /// spheres.
     #[default]
     Auto,
-    /// The smooth spheres' cones, without light images: what the images
+    /// The same casters' cones without light images: what the images
     /// add is the difference from [`CasterRule::Auto`].
     Spheres,
     /// None: the BSDF alone (the course's path tracer).
     Off,
 }
 
-/// A smooth sphere, world space.
+/// A smooth sphere, or the sphere around a mirror-like mesh
+/// ([`meshes`]), world space.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Caster {
     pub center: Vec3,
@@ -124,9 +128,10 @@ pub struct Casters {
 }
 
 impl Casters {
-    /// The smooth spheres of `scene` under `rule` (none past
-    /// [`MAX_CASTERS`]), with the images of the rectangle lights of
-    /// `lights` in the mirror-like ones.
+    /// The smooth spheres of `scene` and the spheres around its
+    /// mirror-like meshes, under `rule` (none past [`MAX_CASTERS`]), with
+    /// the images of the rectangle lights of `lights` in the mirror-like
+    /// spheres.
     pub fn new(scene: &Scene, lights: &LightSet, rule: CasterRule) -> Self {
         if rule == CasterRule::Off {
             return Casters::default();
@@ -138,7 +143,7 @@ impl Casters {
             Some(Material::Microfacet { alpha, .. }) => *alpha <= SMOOTH_ALPHA,
             _ => false,
         };
-        let spheres: Vec<Caster> = scene
+        let mut spheres: Vec<Caster> = scene
             .spheres
             .iter()
             .filter(|s| s.radius > 0.0 && smooth(s.material))
@@ -151,6 +156,7 @@ impl Casters {
                     .and_then(images::image_spread),
             })
             .collect();
+        spheres.extend(meshes::mesh_casters(&scene.mesh, &scene.materials));
         if spheres.len() > MAX_CASTERS {
             return Casters::default();
         }

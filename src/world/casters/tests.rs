@@ -255,3 +255,95 @@ fn only_smooth_spheres_cast_mirror_like_ones_show_lights_and_the_rule_decides() 
     assert_eq!(spheres.spheres, casters.spheres);
     assert_eq!(spheres.images(), 0);
 }
+
+/// Each mirror-like material's triangles (a mirror's in two places, a
+/// conductor's with `alpha` 0.025) become one caster, the sphere around
+/// them centred on their box, showing no images; diffuse, glass and
+/// rough conductor triangles none; `off` none at all.
+#[test]
+fn mirror_like_meshes_cast_from_the_sphere_around_their_triangles() {
+    let rgb = crate::math::Rgb::ONE;
+    let conductor = |alpha| Material::Microfacet {
+        alpha,
+        eta: rgb,
+        k: rgb,
+    };
+    let materials = vec![
+        Material::Diffuse { albedo: rgb },
+        Material::Mirror { reflectance: rgb },
+        Material::Glass {
+            reflectance: rgb,
+            transmittance: rgb,
+            roughness: 0.0,
+            ior: 1.5,
+        },
+        conductor(0.025),
+        conductor(0.2),
+    ];
+    let mut mesh = crate::scene::TriangleMesh::default();
+    let mut triangle = |material: u32, corners: [Vec3; 3]| {
+        let base = mesh.positions.len() as u32;
+        mesh.positions.extend(corners);
+        mesh.triangles.push([base, base + 1, base + 2]);
+        mesh.materials.push(material);
+    };
+    let unit = |x: f32| {
+        [
+            Vec3::new(x, 0.0, 0.0),
+            Vec3::new(x + 1.0, 0.0, 0.0),
+            Vec3::new(x, 1.0, 0.0),
+        ]
+    };
+    for material in 0..5 {
+        triangle(material, unit(10.0 * material as f32));
+    }
+    // The mirror's second triangle, apart from its first: one box for both.
+    triangle(
+        1,
+        [
+            Vec3::new(10.0, 0.0, 4.0),
+            Vec3::new(10.0, 0.0, 6.0),
+            Vec3::new(10.0, 2.0, 6.0),
+        ],
+    );
+    let scene = Scene {
+        materials,
+        mesh,
+        lights: vec![crate::scene::Light::Area {
+            radiance: rgb,
+            center: Vec3::new(0.0, 2.0, 0.0),
+            direction: Vec3::NEG_Y,
+            dim_x: Vec3::X,
+            dim_y: Vec3::Z,
+        }],
+        ..Scene::default()
+    };
+    let lights = LightSet::new(&scene, Default::default());
+    let casters = Casters::new(&scene, &lights, CasterRule::Auto);
+    // The mirror's box is [10, 11] x [0, 2] x [0, 6], its farthest
+    // vertices (10, 0, 0) and (10, 2, 6) at sqrt(0.25 + 1 + 9) from the
+    // centre; the conductor's unit triangle's box centre is at
+    // sqrt(0.5) from its right-angle corner.
+    let mirror = Caster {
+        center: Vec3::new(10.5, 1.0, 3.0),
+        radius: 10.25f32.sqrt(),
+        image_spread: None,
+    };
+    let smooth = Caster {
+        center: Vec3::new(30.5, 0.5, 0.0),
+        radius: 0.5f32.sqrt(),
+        image_spread: None,
+    };
+    assert_eq!(casters.spheres.len(), 2, "{casters:?}");
+    for (found, expected) in casters.spheres.iter().zip([mirror, smooth]) {
+        assert!(found.center.abs_diff_eq(expected.center, 1e-6), "{found:?}");
+        assert!((found.radius - expected.radius).abs() < 1e-6, "{found:?}");
+        assert_eq!(found.image_spread, None);
+    }
+    assert_eq!(casters.images(), 0);
+    assert_eq!(
+        Casters::new(&scene, &lights, CasterRule::Spheres).spheres,
+        casters.spheres
+    );
+    assert!(Casters::new(&scene, &lights, CasterRule::Off).is_empty());
+}
