@@ -47,9 +47,11 @@ says how): the studio map, and outdoor skies with a sun (`sky-2k.hdr`,
 `sun-2k.hdr` with the real sun's size, `sun-4k-black.hdr` black below the
 horizon).
 
-A scene may change a material of the course's file: the copper bunny is
-`bunny_unlit.dae` with its bunny made a rough copper conductor (written to
-`--out` before rendering; the course's file is not changed).
+A scene may change the course's file (a copy written to `--out` before
+rendering; the course's file is not changed): the copper bunny is
+`bunny_unlit.dae` with its bunny made a rough copper conductor,
+`CBbunny_mirror` CBbunny's bunny made a mirror, `CBbunny_257k` its
+triangles each cut into nine.
 
     python3 benches/compare/efficiency.py [--reps 3] [--only CBbunny ...] [-- EXTRA PATHTRACER FLAGS]
     python3 benches/compare/efficiency.py --scene FILE.dae --depth 5 [--env MAP.hdr]   # any scene, any map
@@ -67,29 +69,27 @@ ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 
 
 def with_material(effect, material):
-    """Makes a copy of a scene in `out` whose effect `effect` carries
+    """Writes a copy of a scene whose effect `effect` carries
     `material` (a CGL `<extra>`), put after the effect's `profile_COMMON`."""
-    def make(scene, out):
+    def make(scene, path):
         with open(scene) as f:
             text = f.read()
         start = text.index(f'<effect id="{effect}"')
         end = text.index("</profile_COMMON>", start) + len("</profile_COMMON>")
-        path = os.path.join(out, os.path.basename(scene).replace(".dae", f"-{effect}.dae"))
         with open(path, "w") as f:
             f.write(text[:end] + material + text[end:])
-        return path
     return make
 
 
 def subdivided(geometry, n):
-    """Makes a copy of a scene in `out` whose mesh `geometry` (a triangle
+    """Writes a copy of a scene whose mesh `geometry` (a triangle
     `<polylist>` with a VERTEX and a NORMAL input) has each triangle cut
     into n^2 in its plane: the points (i A + j B + k C) / n, i + j + k = n,
     the normals interpolated the same way and normalised. A point is keyed
     by its weights on the original vertices' indices, so the triangles on
     either side of an edge share its new vertices bit for bit (the mesh
     stays watertight), and the surface is the original one."""
-    def make(scene, out):
+    def make(scene, path):
         with open(scene) as f:
             text = f.read()
         start = text.index(f'<geometry id="{geometry}"')
@@ -144,10 +144,8 @@ def subdivided(geometry, n):
                       + "</vcount>", mesh)
         mesh = re.sub(r"<p>[^<]*</p>", "<p>" + " ".join(
             f"{p} {q}" for face in faces for p, q in face) + "</p>", mesh)
-        path = os.path.join(out, os.path.basename(scene).replace(".dae", f"-x{n * n}.dae"))
         with open(path, "w") as f:
             f.write(text[:start] + mesh + text[end:])
-        return path
     return make
 
 
@@ -155,9 +153,14 @@ def subdivided(geometry, n):
 # 614 / 549 / 466 nm, as the course's own microfacet scenes give them per channel).
 COPPER = """<extra><technique profile="CGL"><microfacet><alpha>0.2</alpha>
 <eta>0.27105 0.67693 1.31640</eta><k>3.60920 2.62480 2.29210</k></microfacet></technique></extra>"""
+# A perfect mirror, and the course's glass (CBspheres.dae's).
+MIRROR = """<extra><technique profile="CGL"><mirror><reflectance>1 1 1</reflectance></mirror>
+</technique></extra>"""
+GLASS = """<extra><technique profile="CGL"><glass><reflectance>1 1 1</reflectance>
+<transmittance>1 1 1</transmittance><roughness>0</roughness><ior>1.45</ior></glass></technique></extra>"""
 
 # name: (course file, course depth -m, environment map or None,
-#        a change to the file (`make(scene, out)` writes the changed copy) or None)
+#        a change to the file (`make(scene, path)` writes the changed copy) or None)
 SCENES = {
     "CBspheres_lambertian": ("CBspheres_lambertian.dae", 8, None, None),
     "CBbunny": ("CBbunny.dae", 5, None, None),
@@ -177,6 +180,11 @@ SCENES = {
     # A large mesh in the box (issue 24's "200k triangles", run at
     # `--spp 16`): CBbunny's 28,576 triangles each cut into 9, 257,184.
     "CBbunny_257k": ("CBbunny.dae", 5, None, subdivided("Mesh-mesh", 3)),
+    # Checks that no lever was tuned on: CBbunny with its bunny a mirror
+    # (the scene that made mirror-like meshes casters), glass, copper.
+    "CBbunny_mirror": ("CBbunny.dae", 5, None, with_material("Default-effect", MIRROR)),
+    "CBbunny_glass": ("CBbunny.dae", 5, None, with_material("Default-effect", GLASS)),
+    "CBbunny_copper": ("CBbunny.dae", 5, None, with_material("Default-effect", COPPER)),
     "teapot+sun2k": ("teapot.dae", 5, "sun-2k.hdr", None),
 }
 # The scenes run when neither --only nor --scene is given.
@@ -264,7 +272,9 @@ def main():
         file, depth, env, change = SCENES[name]
         scene = os.path.join(a.scenes, file)
         if change:
-            scene = change(scene, a.out)
+            changed = os.path.join(a.out, f"{name}.dae")
+            change(scene, changed)
+            scene = changed
         if env:
             env = os.path.join(a.maps, env)
             if not os.path.exists(env):
