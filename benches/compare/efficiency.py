@@ -100,29 +100,35 @@ def subdivided(geometry, n):
         positions = floats[f"{geometry}-positions-array"]
         normals = floats[f"{geometry}-normals-array"]
         corners = [int(x) for x in re.search(r"<p>([^<]*)</p>", mesh).group(1).split()]
-        new_points, new_normals, index_of, faces = [], [], {}, []
+        faces = []
 
-        def point(table, source, weights, out_list):
-            key = (id(table),) + tuple(sorted((v, w) for v, w in weights if w))
-            if key not in index_of:
-                index_of[key] = len(out_list)
-                value = [sum(w * source[3 * v + a] for v, w in key[1:]) / n for a in range(3)]
-                if table is new_normals:
-                    norm = sum(c * c for c in value) ** 0.5
-                    value = [c / norm for c in value]
-                out_list.append(value)
-            return index_of[key]
+        def blender(source, normalise):
+            """Returns `blend(weights)`: the index of the point sum(w v) / n
+            of `source`'s rows v for the (row, integer weight) pairs, made
+            once per set of weights, and the list of the points made."""
+            made, index_of = [], {}
 
+            def blend(weights):
+                key = tuple(sorted((v, w) for v, w in weights if w))
+                if key not in index_of:
+                    index_of[key] = len(made)
+                    value = [sum(w * source[3 * v + a] for v, w in key) / n for a in range(3)]
+                    if normalise:
+                        norm = sum(c * c for c in value) ** 0.5
+                        value = [c / norm for c in value]
+                    made.append(value)
+                return index_of[key]
+            return blend, made
+
+        new_point, new_points = blender(positions, False)
+        new_normal, new_normals = blender(normals, True)
         for f in range(len(corners) // 6):
             vs = corners[6 * f:6 * f + 6:2]
             ns = corners[6 * f + 1:6 * f + 6:2]
 
             def corner(i, j):
-                k = n - i - j
-                weights = list(zip(vs, (i, j, k)))
-                p = point(new_points, positions, weights, new_points)
-                q = point(new_normals, normals, list(zip(ns, (i, j, k))), new_normals)
-                return p, q
+                weights = (i, j, n - i - j)
+                return new_point(zip(vs, weights)), new_normal(zip(ns, weights))
             for i in range(n):
                 for j in range(n - i):
                     faces.append((corner(i, j), corner(i + 1, j), corner(i, j + 1)))
