@@ -235,13 +235,7 @@ fn only_smooth_spheres_cast_mirror_like_ones_show_lights_and_the_rule_decides() 
     let scene = Scene {
         materials,
         spheres,
-        lights: vec![crate::scene::Light::Area {
-            radiance: rgb,
-            center: Vec3::new(0.0, 2.0, 0.0),
-            direction: Vec3::NEG_Y,
-            dim_x: Vec3::X,
-            dim_y: Vec3::Z,
-        }],
+        lights: vec![light_above()],
         ..Scene::default()
     };
     let lights = LightSet::new(&scene, Default::default());
@@ -309,13 +303,7 @@ fn mirror_like_meshes_cast_from_the_sphere_around_their_triangles() {
     let scene = Scene {
         materials,
         mesh,
-        lights: vec![crate::scene::Light::Area {
-            radiance: rgb,
-            center: Vec3::new(0.0, 2.0, 0.0),
-            direction: Vec3::NEG_Y,
-            dim_x: Vec3::X,
-            dim_y: Vec3::Z,
-        }],
+        lights: vec![light_above()],
         ..Scene::default()
     };
     let lights = LightSet::new(&scene, Default::default());
@@ -346,4 +334,15 @@ fn mirror_like_meshes_cast_from_the_sphere_around_their_triangles() {
         casters.spheres
     );
     assert!(Casters::new(&scene, &lights, CasterRule::Off).is_empty());
+}
+
+/// A unit square light two above the origin, facing down.
+fn light_above() -> crate::scene::Light {
+    crate::scene::Light::Area {
+        radiance: crate::math::Rgb::ONE,
+        center: Vec3::new(0.0, 2.0, 0.0),
+        direction: Vec3::NEG_Y,
+        dim_x: Vec3::X,
+        dim_y: Vec3::Z,
+    }
 }
