@@ -113,3 +113,49 @@ fn the_specialised_integrator_agrees_with_the_general_one() {
     let plan = Plan::new(&materials, &world.lights, &general, &ThinLens::PINHOLE);
     assert!(plan.specialise(&general).direct.mis());
 }
+
+/// The plan's casters line counts each kind: the materials box's three
+/// smooth spheres and the mirror's light image; with a mirror quad added,
+/// the sphere around it too; the point-lit scene none.
+#[test]
+fn the_plan_names_the_caustic_casters() {
+    use pathtracer::world::casters::{CasterRule, Casters};
+    let casters_line = |scene: &Scene| {
+        let lights = LightSet::new(scene, LightConvention::Physical);
+        let plan = plan_of(scene, 5).with_casters(&Casters::new(scene, &lights, CasterRule::Auto));
+        plan.lines
+            .into_iter()
+            .find(|l| l.starts_with("plan: caustic casters: "))
+            .expect("a casters line")
+    };
+    let spheres = casters_line(&materials_box());
+    assert!(
+        spheres.contains(": 3 sphere(s) (mirror, glass"),
+        "{spheres}"
+    );
+    assert!(spheres.contains("1 light image(s)"), "{spheres}");
+    assert!(!spheres.contains("meshes"), "{spheres}");
+
+    let mut with_mesh = materials_box();
+    with_mesh.materials.push(Material::Mirror {
+        reflectance: Vec3::ONE,
+    });
+    let mirror = (with_mesh.materials.len() - 1) as u32;
+    let mesh = &mut with_mesh.mesh;
+    let base = mesh.positions.len() as u32;
+    mesh.positions.extend([
+        Vec3::new(0.5, 0.0, -0.9),
+        Vec3::new(0.9, 0.0, -0.9),
+        Vec3::new(0.9, 0.6, -0.9),
+    ]);
+    mesh.normals.extend([Vec3::Z; 3]);
+    mesh.triangles.push([base, base + 1, base + 2]);
+    mesh.materials.push(mirror);
+    let line = casters_line(&with_mesh);
+    assert!(
+        line.contains(": 3 sphere(s) (mirror, glass")
+            && line.contains(", 1 sphere(s) around mirror-like meshes"),
+        "{line}"
+    );
+    assert!(casters_line(&point_lit()).contains("none"));
+}

@@ -50,8 +50,9 @@ horizon).
 A scene may change the course's file (a copy written to `--out` before
 rendering; the course's file is not changed): the copper bunny is
 `bunny_unlit.dae` with its bunny made a rough copper conductor,
-`CBbunny_mirror` CBbunny's bunny made a mirror, `CBbunny_257k` its
-triangles each cut into nine.
+`CBbunny_mirror`, `CBbunny_glass` and `CBbunny_copper` CBbunny's bunny
+made a mirror, glass or that copper, `CBbunny_257k` its triangles each
+cut into nine (the issue ran it at 16 spp: `--spp 16`).
 
     python3 benches/compare/efficiency.py [--reps 3] [--only CBbunny ...] [-- EXTRA PATHTRACER FLAGS]
     python3 benches/compare/efficiency.py --scene FILE.dae --depth 5 [--env MAP.hdr]   # any scene, any map
@@ -65,7 +66,6 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
-
 
 
 def with_material(effect, material):
@@ -85,7 +85,8 @@ def subdivided(geometry, n):
     """Writes a copy of a scene whose mesh `geometry` (a triangle
     `<polylist>` with a VERTEX and a NORMAL input) has each triangle cut
     into n^2 in its plane: the points (i A + j B + k C) / n, i + j + k = n,
-    the normals interpolated the same way and normalised. A point is keyed
+    the normals interpolated the same way and normalised (neither renderer
+    reads them: both rebuild normals from connectivity). A point is keyed
     by its weights on the original vertices' indices, so the triangles on
     either side of an edge share its new vertices bit for bit (the mesh
     stays watertight), and the surface is the original one."""
@@ -99,29 +100,36 @@ def subdivided(geometry, n):
         floats = {name: [float(x) for x in values.split()] for name, values in arrays}
         positions = floats[f"{geometry}-positions-array"]
         normals = floats[f"{geometry}-normals-array"]
+        # What this rewrite assumes, checked: one list of triangles whose
+        # corners are (vertex, normal) index pairs.
+        assert mesh.count("<polylist") == 1 and mesh.count("<p>") == 1, f"{geometry}: one <polylist>"
+        assert len(re.findall(r"<input [^>]*offset=", mesh)) == 2, f"{geometry}: VERTEX and NORMAL only"
+        vcount = re.search(r"<vcount>([^<]*)</vcount>", mesh).group(1).split()
+        assert set(vcount) == {"3"}, f"{geometry}: triangles only"
         corners = [int(x) for x in re.search(r"<p>([^<]*)</p>", mesh).group(1).split()]
+        assert len(corners) == 6 * len(vcount)
         faces = []
 
-        def blender(source, normalise):
-            """Returns `blend(weights)`: the index of the point sum(w v) / n
-            of `source`'s rows v for the (row, integer weight) pairs, made
-            once per set of weights, and the list of the points made."""
+        def point_table(source, normalise):
+            """Returns `index(weights)`, the index of the point sum(w v) / n
+            of `source`'s rows v for (row, integer weight) pairs (made on
+            its first request), and the list of the points made."""
             made, index_of = [], {}
 
-            def blend(weights):
+            def index(weights):
                 key = tuple(sorted((v, w) for v, w in weights if w))
                 if key not in index_of:
                     index_of[key] = len(made)
                     value = [sum(w * source[3 * v + a] for v, w in key) / n for a in range(3)]
-                    if normalise:
-                        norm = sum(c * c for c in value) ** 0.5
+                    norm = sum(c * c for c in value) ** 0.5
+                    if normalise and norm > 0:
                         value = [c / norm for c in value]
                     made.append(value)
                 return index_of[key]
-            return blend, made
+            return index, made
 
-        new_point, new_points = blender(positions, False)
-        new_normal, new_normals = blender(normals, True)
+        new_point, new_points = point_table(positions, False)
+        new_normal, new_normals = point_table(normals, True)
         for f in range(len(corners) // 6):
             vs = corners[6 * f:6 * f + 6:2]
             ns = corners[6 * f + 1:6 * f + 6:2]
@@ -134,7 +142,9 @@ def subdivided(geometry, n):
                     faces.append((corner(i, j), corner(i + 1, j), corner(i, j + 1)))
                     if i + j < n - 1:
                         faces.append((corner(i + 1, j), corner(i + 1, j + 1), corner(i, j + 1)))
-        flat = lambda rows: " ".join(f"{x:.9g}" for row in rows for x in row)
+
+        def flat(rows):
+            return " ".join(f"{x:.9g}" for row in rows for x in row)
         mesh = re.sub(rf'(<float_array id="{geometry}-positions-array" count=")\d+(">)[^<]*',
                       lambda m: f"{m.group(1)}{3 * len(new_points)}{m.group(2)}{flat(new_points)}",
                       mesh)
@@ -186,8 +196,9 @@ SCENES = {
     # A large mesh in the box (issue 24's "200k triangles", run at
     # `--spp 16`): CBbunny's 28,576 triangles each cut into 9, 257,184.
     "CBbunny_257k": ("CBbunny.dae", 5, None, subdivided("Mesh-mesh", 3)),
-    # Checks that no lever was tuned on: CBbunny with its bunny a mirror
-    # (the scene that made mirror-like meshes casters), glass, copper.
+    # CBbunny with its bunny a mirror, glass or copper: run first as checks
+    # that no lever was tuned on, they then decided which meshes are
+    # caustic casters (docs/maintainers/caustic-casters.md).
     "CBbunny_mirror": ("CBbunny.dae", 5, None, with_material("Default-effect", MIRROR)),
     "CBbunny_glass": ("CBbunny.dae", 5, None, with_material("Default-effect", GLASS)),
     "CBbunny_copper": ("CBbunny.dae", 5, None, with_material("Default-effect", COPPER)),

@@ -216,8 +216,8 @@ pub struct CourseArgs {
     /// conductors with alpha <= 0.3), the spheres around its mirror-like
     /// meshes and the lights' images in the mirror-like spheres, weighted
     /// so the image's expectation is unchanged (`auto`, the default),
-    /// towards the spheres alone (`spheres`), or none (`off`, the
-    /// course's).
+    /// towards the same spheres without the light images (`spheres`), or
+    /// none (`off`, the course's).
     #[arg(long, value_enum, value_name = "RULE", default_value_t = CastersArg::Auto)]
     pub casters: CastersArg,
 

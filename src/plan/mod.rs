@@ -8,7 +8,7 @@
 //! | multiple importance sampling | a light BSDF rays can find (area, emissive triangles, sky) and a non-delta BSDF | the BSDF density per light sample and the last ray of every path |
 //! | lens | `-b > 0` | the lens sample and its disk warp per camera ray |
 //! | environment samples ([`light_samples`]) | an environment map lights the scene and `-l` is not given | nothing: four samples of the map a vertex instead of one, less noise per second |
-//! | caustic casters | a mirror, glass or smooth conductor sphere (and not `--casters off`) | nothing: it adds a sampling strategy where a scene has caustics, and costs nothing where it has none |
+//! | caustic casters | a mirror, glass or smooth conductor sphere, or a mirror-like mesh (and not `--casters off`) | nothing: it adds a sampling strategy where a scene has caustics, and costs nothing where it has none |
 //!
 //! Specialising changes no expectation: the plan only drops work whose
 //! result is zero or whose weight is 1 (MIS with no second strategy), or
@@ -227,20 +227,36 @@ impl Plan {
     /// towards for caustics ([`crate::world::casters`]).
     pub fn with_casters(mut self, casters: &Casters) -> Self {
         let n = casters.spheres.len();
+        let spheres = n - casters.meshes;
         self.lines.push(if n == 0 {
-            "plan: caustic casters: none (no mirror, glass or smooth conductor sphere, or --casters off)".into()
+            "plan: caustic casters: none (no mirror, glass or smooth conductor sphere, \
+             no mirror-like mesh, or --casters off)"
+                .into()
         } else if !self.bsdfs.diffuse {
             format!("plan: caustic casters: {n} sphere(s), unused: no surface is diffuse")
         } else {
+            let mut kinds = Vec::new();
+            if spheres > 0 {
+                kinds.push(format!(
+                    "{spheres} sphere(s) (mirror, glass, conductor with alpha <= {SMOOTH_ALPHA})"
+                ));
+            }
+            if casters.meshes > 0 {
+                kinds.push(format!(
+                    "{} sphere(s) around mirror-like meshes (mirror, conductor with alpha <= {IMAGE_ALPHA})",
+                    casters.meshes
+                ));
+            }
             let images = match casters.images() {
                 0 => String::new(),
                 k => format!(
-                    ", and {k} light image(s) in mirror-like ones (mirror, conductor with alpha <= {IMAGE_ALPHA})"
+                    ", and {k} light image(s) in mirror-like spheres (mirror, conductor with alpha <= {IMAGE_ALPHA})"
                 ),
             };
             format!(
-                "plan: caustic casters: {n} sphere(s) (mirror, glass, conductor with alpha <= {SMOOTH_ALPHA}){images}: \
-                 diffuse surfaces draw {CASTER_PROBABILITY} of their continuations towards them"
+                "plan: caustic casters: {}{images}: \
+                 diffuse surfaces draw {CASTER_PROBABILITY} of their continuations towards them",
+                kinds.join(", ")
             )
         });
         self

@@ -122,16 +122,19 @@ pub struct Caster {
 /// The scene's caustic casters.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Casters {
+    /// The smooth spheres, then the spheres around mirror-like meshes.
     pub spheres: Vec<Caster>,
+    /// How many of `spheres`, the last ones, bound meshes.
+    pub meshes: usize,
     /// The lights whose images mirror-like casters show.
     pub lights: Vec<ImagedLight>,
 }
 
 impl Casters {
-    /// The smooth spheres of `scene` and the spheres around its
-    /// mirror-like meshes, under `rule` (none past [`MAX_CASTERS`]), with
-    /// the images of the rectangle lights of `lights` in the mirror-like
-    /// spheres.
+    /// The smooth spheres of `scene` (none if there are more than
+    /// [`MAX_CASTERS`]), then the spheres around its mirror-like meshes in
+    /// the slots they leave, under `rule`, with the images of the
+    /// rectangle lights of `lights` in the mirror-like spheres.
     pub fn new(scene: &Scene, lights: &LightSet, rule: CasterRule) -> Self {
         if rule == CasterRule::Off {
             return Casters::default();
@@ -156,13 +159,17 @@ impl Casters {
                     .and_then(images::image_spread),
             })
             .collect();
-        spheres.extend(meshes::mesh_casters(&scene.mesh, &scene.materials));
         if spheres.len() > MAX_CASTERS {
             return Casters::default();
         }
+        let mut meshes = meshes::mesh_casters(&scene.mesh, &scene.materials);
+        meshes.truncate(MAX_CASTERS - spheres.len());
         let mirrors = spheres.iter().any(|s| s.image_spread.is_some());
+        let mesh_count = meshes.len();
+        spheres.extend(meshes);
         Casters {
             spheres,
+            meshes: mesh_count,
             lights: if mirrors && rule == CasterRule::Auto {
                 ImagedLight::of(lights)
             } else {

@@ -11,6 +11,7 @@ fn one(center: Vec3, radius: f32) -> Casters {
             image_spread: None,
         }],
         lights: Vec::new(),
+        meshes: 0,
     }
 }
 
@@ -58,6 +59,7 @@ fn an_image_that_a_vertex_does_not_have_is_its_spheres_cone() {
     let casters = Casters {
         spheres: vec![mirror(center, 0.3)],
         lights: vec![light(Vec3::new(0.0, 3.0, 0.0), Vec3::Y)],
+        meshes: 0,
     };
     let cones = casters.cones(Vec3::ZERO, Vec3::Y);
     assert_eq!(cones.len(), 2);
@@ -85,6 +87,7 @@ fn a_light_image_is_seen_from_the_vertex_itself() {
     let casters = Casters {
         spheres: vec![mirror(center, 0.3)],
         lights: vec![lamp],
+        meshes: 0,
     };
     let cones = casters.cones(p, Vec3::Y);
     assert_eq!(cones.len(), 2);
@@ -110,6 +113,7 @@ fn each_cone_gets_its_share_of_u_x_stretched_back() {
     let casters = Casters {
         spheres,
         lights: Vec::new(),
+        meshes: 0,
     };
     let cones = casters.cones(Vec3::ZERO, Vec3::Y);
     assert_eq!(cones.len(), 2);
@@ -146,7 +150,11 @@ fn light_images_never_take_a_casters_place() {
         light(Vec3::new(0.0, 3.0, 0.0), Vec3::NEG_Y),
         light(Vec3::new(1.0, 3.0, 1.0), Vec3::NEG_Y),
     ];
-    let casters = Casters { spheres, lights };
+    let casters = Casters {
+        spheres,
+        lights,
+        meshes: 0,
+    };
     let cones = casters.cones(Vec3::ZERO, Vec3::Y);
     assert_eq!(cones.len(), MAX_CONES);
     for caster in &casters.spheres {
@@ -253,16 +261,106 @@ fn only_smooth_spheres_cast_mirror_like_ones_show_lights_and_the_rule_decides() 
 /// Each mirror-like material's triangles (a mirror's in two places, a
 /// conductor's with `alpha` 0.025) become one caster, the sphere around
 /// them centred on their box, showing no images; diffuse, glass and
-/// rough conductor triangles none; `off` none at all.
+/// rough conductor triangles none, nor a triangle whose material is not
+/// in the scene; `off` none at all.
 #[test]
 fn mirror_like_meshes_cast_from_the_sphere_around_their_triangles() {
+    let scene = Scene {
+        materials: five_materials(),
+        mesh: mesh_of(&[
+            (0, unit_triangle(0.0)),
+            (1, unit_triangle(10.0)),
+            (2, unit_triangle(20.0)),
+            // No vertex at a corner of its box: the radius is the
+            // farthest vertex's distance, sqrt 2, not the box's half
+            // diagonal, sqrt 3.
+            (
+                3,
+                [
+                    Vec3::new(30.0, 0.0, 1.0),
+                    Vec3::new(31.0, 2.0, 0.0),
+                    Vec3::new(32.0, 1.0, 2.0),
+                ],
+            ),
+            (4, unit_triangle(40.0)),
+            (99, unit_triangle(50.0)),
+            // The mirror's second triangle, apart from its first: one
+            // box for both.
+            (
+                1,
+                [
+                    Vec3::new(10.0, 0.0, 4.0),
+                    Vec3::new(10.0, 0.0, 6.0),
+                    Vec3::new(10.0, 2.0, 6.0),
+                ],
+            ),
+        ]),
+        lights: vec![light_above()],
+        ..Scene::default()
+    };
+    let lights = LightSet::new(&scene, Default::default());
+    let casters = Casters::new(&scene, &lights, CasterRule::Auto);
+    // The mirror's box is [10, 11] x [0, 2] x [0, 6], its farthest
+    // vertices (10, 0, 0) and (10, 2, 6) at sqrt(0.25 + 1 + 9) from the
+    // centre.
+    let expected = [
+        (Vec3::new(10.5, 1.0, 3.0), 10.25f32.sqrt()),
+        (Vec3::new(31.0, 1.0, 1.0), 2.0f32.sqrt()),
+    ];
+    assert_eq!(casters.spheres.len(), 2, "{casters:?}");
+    assert_eq!(casters.meshes, 2);
+    for (found, (center, radius)) in casters.spheres.iter().zip(expected) {
+        assert!(found.center.abs_diff_eq(center, 1e-6), "{found:?}");
+        assert!((found.radius - radius).abs() < 1e-6, "{found:?}");
+        assert_eq!(found.image_spread, None);
+    }
+    assert_eq!(casters.images(), 0);
+    assert_eq!(
+        Casters::new(&scene, &lights, CasterRule::Spheres).spheres,
+        casters.spheres
+    );
+    assert!(Casters::new(&scene, &lights, CasterRule::Off).is_empty());
+}
+
+/// Mesh casters take the slots the spheres leave: seven mirror spheres
+/// and two mirror meshes give seven spheres and one mesh; nine spheres,
+/// more than [`MAX_CASTERS`], none at all, meshes included.
+#[test]
+fn mesh_casters_take_the_slots_the_spheres_leave() {
+    use crate::scene::Sphere;
+    let with_spheres = |n: u32| Scene {
+        materials: five_materials(),
+        spheres: (0..n)
+            .map(|i| Sphere {
+                center: Vec3::new(i as f32, 5.0, 0.0),
+                radius: 0.3,
+                material: 1,
+            })
+            .collect(),
+        mesh: mesh_of(&[(1, unit_triangle(0.0)), (3, unit_triangle(10.0))]),
+        lights: vec![light_above()],
+        ..Scene::default()
+    };
+    let scene = with_spheres(7);
+    let lights = LightSet::new(&scene, Default::default());
+    let casters = Casters::new(&scene, &lights, CasterRule::Auto);
+    assert_eq!((casters.spheres.len(), casters.meshes), (MAX_CASTERS, 1));
+    // The mesh comes last: the spheres keep their images.
+    assert_eq!(casters.spheres[MAX_CASTERS - 1].image_spread, None);
+    assert_eq!(casters.images(), 7);
+    let scene = with_spheres(9);
+    assert!(Casters::new(&scene, &lights, CasterRule::Auto).is_empty());
+}
+
+/// Diffuse, mirror, glass, a conductor with `alpha` 0.025, one with 0.2.
+fn five_materials() -> Vec<Material> {
     let rgb = crate::math::Rgb::ONE;
     let conductor = |alpha| Material::Microfacet {
         alpha,
         eta: rgb,
         k: rgb,
     };
-    let materials = vec![
+    vec![
         Material::Diffuse { albedo: rgb },
         Material::Mirror { reflectance: rgb },
         Material::Glass {
@@ -273,67 +371,28 @@ fn mirror_like_meshes_cast_from_the_sphere_around_their_triangles() {
         },
         conductor(0.025),
         conductor(0.2),
-    ];
+    ]
+}
+
+/// The right triangle with legs of 1 along x and y, at `(x, 0, 0)`.
+fn unit_triangle(x: f32) -> [Vec3; 3] {
+    [
+        Vec3::new(x, 0.0, 0.0),
+        Vec3::new(x + 1.0, 0.0, 0.0),
+        Vec3::new(x, 1.0, 0.0),
+    ]
+}
+
+/// A mesh of separate triangles, each with its material.
+fn mesh_of(triangles: &[(u32, [Vec3; 3])]) -> crate::scene::TriangleMesh {
     let mut mesh = crate::scene::TriangleMesh::default();
-    let mut triangle = |material: u32, corners: [Vec3; 3]| {
+    for &(material, corners) in triangles {
         let base = mesh.positions.len() as u32;
         mesh.positions.extend(corners);
         mesh.triangles.push([base, base + 1, base + 2]);
         mesh.materials.push(material);
-    };
-    let unit = |x: f32| {
-        [
-            Vec3::new(x, 0.0, 0.0),
-            Vec3::new(x + 1.0, 0.0, 0.0),
-            Vec3::new(x, 1.0, 0.0),
-        ]
-    };
-    for material in 0..5 {
-        triangle(material, unit(10.0 * material as f32));
     }
-    // The mirror's second triangle, apart from its first: one box for both.
-    triangle(
-        1,
-        [
-            Vec3::new(10.0, 0.0, 4.0),
-            Vec3::new(10.0, 0.0, 6.0),
-            Vec3::new(10.0, 2.0, 6.0),
-        ],
-    );
-    let scene = Scene {
-        materials,
-        mesh,
-        lights: vec![light_above()],
-        ..Scene::default()
-    };
-    let lights = LightSet::new(&scene, Default::default());
-    let casters = Casters::new(&scene, &lights, CasterRule::Auto);
-    // The mirror's box is [10, 11] x [0, 2] x [0, 6], its farthest
-    // vertices (10, 0, 0) and (10, 2, 6) at sqrt(0.25 + 1 + 9) from the
-    // centre; the conductor's unit triangle's box centre is at
-    // sqrt(0.5) from its right-angle corner.
-    let mirror = Caster {
-        center: Vec3::new(10.5, 1.0, 3.0),
-        radius: 10.25f32.sqrt(),
-        image_spread: None,
-    };
-    let smooth = Caster {
-        center: Vec3::new(30.5, 0.5, 0.0),
-        radius: 0.5f32.sqrt(),
-        image_spread: None,
-    };
-    assert_eq!(casters.spheres.len(), 2, "{casters:?}");
-    for (found, expected) in casters.spheres.iter().zip([mirror, smooth]) {
-        assert!(found.center.abs_diff_eq(expected.center, 1e-6), "{found:?}");
-        assert!((found.radius - expected.radius).abs() < 1e-6, "{found:?}");
-        assert_eq!(found.image_spread, None);
-    }
-    assert_eq!(casters.images(), 0);
-    assert_eq!(
-        Casters::new(&scene, &lights, CasterRule::Spheres).spheres,
-        casters.spheres
-    );
-    assert!(Casters::new(&scene, &lights, CasterRule::Off).is_empty());
+    mesh
 }
 
 /// A unit square light two above the origin, facing down.
