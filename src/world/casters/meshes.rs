@@ -82,3 +82,6 @@ pub fn mesh_casters(mesh: &TriangleMesh, materials: &[Material]) -> Vec<Caster> 
         })
         .collect()
 }
+
+#[cfg(test)]
+pub(super) mod tests;
