@@ -86,7 +86,8 @@ pub const CASTER_PROBABILITY: f32 = 0.25;
 /// of no casters, the smooth one alone 1.07 (docs/10).
 pub const SMOOTH_ALPHA: f32 = 0.3;
 
-/// More casters than this and none are used.
+/// The most casters: more smooth spheres than this and none are used;
+/// mirror-like meshes take the slots the spheres leave.
 pub const MAX_CASTERS: usize = 8;
 
 /// The most cones a vertex mixes: its casters', then light images in the
