@@ -121,8 +121,8 @@ def subdivided(geometry, n):
                 if key not in index_of:
                     index_of[key] = len(made)
                     value = [sum(w * source[3 * v + a] for v, w in key) / n for a in range(3)]
-                    norm = sum(c * c for c in value) ** 0.5
-                    if normalise and norm > 0:
+                    norm = sum(c * c for c in value) ** 0.5 if normalise else 0
+                    if norm > 0:
                         value = [c / norm for c in value]
                     made.append(value)
                 return index_of[key]
@@ -145,16 +145,11 @@ def subdivided(geometry, n):
 
         def flat(rows):
             return " ".join(f"{x:.9g}" for row in rows for x in row)
-        mesh = re.sub(rf'(<float_array id="{geometry}-positions-array" count=")\d+(">)[^<]*',
-                      lambda m: f"{m.group(1)}{3 * len(new_points)}{m.group(2)}{flat(new_points)}",
-                      mesh)
-        mesh = re.sub(rf'(<float_array id="{geometry}-normals-array" count=")\d+(">)[^<]*',
-                      lambda m: f"{m.group(1)}{3 * len(new_normals)}{m.group(2)}{flat(new_normals)}",
-                      mesh)
-        mesh = re.sub(r'(<source id="[^"]+-positions">.*?<accessor [^>]*count=")\d+',
-                      lambda m: f"{m.group(1)}{len(new_points)}", mesh, flags=re.S)
-        mesh = re.sub(r'(<source id="[^"]+-normals">.*?<accessor [^>]*count=")\d+',
-                      lambda m: f"{m.group(1)}{len(new_normals)}", mesh, flags=re.S)
+        for kind, rows in (("positions", new_points), ("normals", new_normals)):
+            mesh = re.sub(rf'(<float_array id="{geometry}-{kind}-array" count=")\d+(">)[^<]*',
+                          lambda m: f"{m.group(1)}{3 * len(rows)}{m.group(2)}{flat(rows)}", mesh)
+            mesh = re.sub(rf'(<source id="[^"]+-{kind}">.*?<accessor [^>]*count=")\d+',
+                          lambda m: f"{m.group(1)}{len(rows)}", mesh, flags=re.S)
         mesh = re.sub(r'(<polylist [^>]*count=")\d+', lambda m: f"{m.group(1)}{len(faces)}", mesh)
         mesh = re.sub(r"<vcount>[^<]*</vcount>", "<vcount>" + " ".join(["3"] * len(faces))
                       + "</vcount>", mesh)

@@ -36,20 +36,16 @@
 
 use glam::Vec3;
 
-use super::images::IMAGE_ALPHA;
-use super::Caster;
+use super::{images, Caster};
 use crate::intersect::Aabb;
 use crate::scene::{Material, MaterialId, TriangleMesh};
 
 /// Whether triangles of `material` make a mesh caster: a mirror, or a
-/// conductor up to [`IMAGE_ALPHA`] (the light images' bound, for the same
-/// reason: up to it a reflection keeps the light's shape).
+/// conductor up to [`images::IMAGE_ALPHA`], the materials that show light
+/// images on a sphere ([`images::image_spread`]), for the same reason: up
+/// to that roughness a reflection keeps the light's shape.
 pub fn casts_as_mesh(material: &Material) -> bool {
-    match *material {
-        Material::Mirror { .. } => true,
-        Material::Microfacet { alpha, .. } => alpha <= IMAGE_ALPHA,
-        _ => false,
-    }
+    images::image_spread(material).is_some()
 }
 
 /// The bounding spheres of `mesh`'s triangles of each material of
