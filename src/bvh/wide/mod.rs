@@ -62,7 +62,16 @@ pub const WIDTH: usize = 4;
 pub const ARITY: usize = 8;
 
 /// A child of a wide node: an interior node, a leaf's packs, or nothing.
+///
+/// Aligned to its size, 8 bytes, so that the compiler treats it as one
+/// word: the traversal loads a child's link into a general register and
+/// tests it there. With the default alignment of 4, LLVM loaded it into
+/// a vector register and moved each half out, some cycles more on the
+/// chain each node waits on (a node's load, its test, the child's link,
+/// the child's load): +2–4 % on the benchmark's primary and random rays
+/// (`docs/maintainers/wide-bvh.md`, round 12).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[repr(C, align(8))]
 pub struct WideLink {
     /// Interior: index into [`WideBvh::nodes`]. Leaf: first index into
     /// [`WideBvh::packs`]. Empty slot: [`WideLink::EMPTY`]'s value.
