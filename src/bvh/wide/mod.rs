@@ -73,8 +73,8 @@ pub const ARITY: usize = 8;
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[repr(C, align(8))]
 pub struct WideLink {
-    /// Interior: index into [`WideBvh::nodes`]. Leaf: first index into
-    /// [`WideBvh::packs`]. Empty slot: [`WideLink::EMPTY`]'s value.
+    /// Interior: index into `WideBvh::nodes`. Leaf: first index into
+    /// `WideBvh::packs`. Empty slot: [`WideLink::EMPTY`]'s value.
     pub first: u32,
     /// Interior and empty: 0. Leaf: number of packs (at least 1), with
     /// [`WideLink::HAS_SPHERES`] set when a lane holds a sphere.
@@ -101,7 +101,7 @@ impl WideLink {
         *self == WideLink::EMPTY
     }
 
-    /// The leaf's packs, as a range of indices into [`WideBvh::packs`].
+    /// The leaf's packs, as a range of indices into `WideBvh::packs`.
     #[inline(always)]
     pub fn packs(&self) -> std::ops::Range<usize> {
         let first = self.first as usize;
@@ -115,16 +115,20 @@ impl WideLink {
 }
 
 /// A wide BVH: the root's box and link, the nodes and the triangle packs.
+///
+/// Made by [`collapse::collapse`]; its fields are private to the crate,
+/// since closest-hit traversal relies on every interior link indexing
+/// `nodes` (and reads the node without a bounds check).
 #[derive(Clone, Debug, Default)]
 pub struct WideBvh {
     /// Box of everything in the tree.
-    pub bounds: Aabb,
+    pub(crate) bounds: Aabb,
     /// The root: a leaf for a tiny scene, else `nodes[0]`; `None` when empty.
-    pub root: Option<WideLink>,
+    pub(crate) root: Option<WideLink>,
     /// Interior nodes; children of a node come after it.
-    pub nodes: Vec<WideNode>,
+    pub(crate) nodes: Vec<WideNode>,
     /// Leaf contents, each leaf's packs contiguous.
-    pub packs: Vec<TrianglePack>,
+    pub(crate) packs: Vec<TrianglePack>,
 }
 
 impl WideBvh {
