@@ -49,7 +49,8 @@ horizon).
 
 A scene may change the course's file (a copy written to `--out` before
 rendering; the course's file is not changed): the copper bunny is
-`bunny_unlit.dae` with its bunny made a rough copper conductor,
+`bunny_unlit.dae` with its bunny made a rough copper conductor (the
+smooth copper bunny: the same copper near a mirror, `alpha` 0.05),
 `CBbunny_mirror`, `CBbunny_glass` and `CBbunny_copper` CBbunny's bunny
 made a mirror, glass or that copper, `CBbunny_257k` its triangles each
 cut into nine (the issue ran it at 16 spp: `--spp 16`).
@@ -164,6 +165,8 @@ def subdivided(geometry, n):
 # 614 / 549 / 466 nm, as the course's own microfacet scenes give them per channel).
 COPPER = """<extra><technique profile="CGL"><microfacet><alpha>0.2</alpha>
 <eta>0.27105 0.67693 1.31640</eta><k>3.60920 2.62480 2.29210</k></microfacet></technique></extra>"""
+# The same copper, near a mirror (alpha 0.05): sharper than a soft map.
+SMOOTH_COPPER = COPPER.replace("<alpha>0.2</alpha>", "<alpha>0.05</alpha>")
 # A perfect mirror, and the course's glass (CBspheres.dae's).
 MIRROR = """<extra><technique profile="CGL"><mirror><reflectance>1 1 1</reflectance></mirror>
 </technique></extra>"""
@@ -198,6 +201,12 @@ SCENES = {
     "CBbunny_glass": ("CBbunny.dae", 5, None, with_material("Default-effect", GLASS)),
     "CBbunny_copper": ("CBbunny.dae", 5, None, with_material("Default-effect", COPPER)),
     "teapot+sun2k": ("teapot.dae", 5, "sun-2k.hdr", None),
+    # A near-mirror under a soft map and under a sun: checks no lever was
+    # tuned on (docs/10, section 2: the first is below Mitsuba).
+    "smooth_copper_bunny+studio": ("bunny_unlit.dae", 5, "studio.hdr",
+                                   with_material("Default-effect", SMOOTH_COPPER)),
+    "smooth_copper_bunny+sun2k": ("bunny_unlit.dae", 5, "sun-2k.hdr",
+                                  with_material("Default-effect", SMOOTH_COPPER)),
 }
 # The scenes run when neither --only nor --scene is given.
 DEFAULT = ["CBspheres_lambertian", "CBbunny", "CBspheres_microfacet_al_ag", "bunny_unlit+studio",
