@@ -73,6 +73,7 @@ fn found(scene: &Scene, convention: LightConvention, origin: Vec3, camera: bool)
         PrevVertex::Scattering {
             p: origin,
             bsdf_pdf: std::f32::consts::FRAC_1_PI,
+            splits_map: true,
         }
     };
     tracer(LIGHTS, 2, false).found_emission(&world, &ray, next.as_ref(), &prev)

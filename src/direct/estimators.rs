@@ -52,6 +52,7 @@ impl DirectHemisphere {
         let from = PrevVertex::Scattering {
             p: point.hit.p,
             bsdf_pdf: uniform_hemisphere_pdf(Vec3::Z),
+            splits_map: world.splits_map(&point.bsdf),
         };
         for _ in 0..n {
             let wi_local = sample_uniform_hemisphere(sampler.get_2d());
@@ -100,12 +101,14 @@ pub struct DirectLights {
 }
 
 impl DirectLights {
-    /// How the light strategy samples light `index` of `lights`.
-    pub fn strategy(&self, lights: &LightSet, index: usize) -> LightStrategy {
+    /// How the light strategy samples light `index` of `lights` at a
+    /// vertex that splits an environment map's samples or not
+    /// (`splits_map`: [`World::splits_map`]).
+    pub fn strategy(&self, lights: &LightSet, index: usize, splits_map: bool) -> LightStrategy {
         let light = &lights.lights[index];
         let samples = match (light, self.environment_samples) {
             (Light::Environment(_), Some(n))
-                if matches!(lights.choice(), LightChoice::EveryLight) =>
+                if splits_map && matches!(lights.choice(), LightChoice::EveryLight) =>
             {
                 n
             }
@@ -122,11 +125,12 @@ impl DirectLights {
         sampler: &mut impl Sampler,
     ) -> Rgb {
         let lights = &world.lights;
+        let splits_map = world.splits_map(&point.bsdf);
         match lights.choice() {
             LightChoice::EveryLight => {
                 let mut total = Rgb::ZERO;
                 for (index, light) in lights.lit() {
-                    let strategy = self.strategy(lights, index);
+                    let strategy = self.strategy(lights, index, splits_map);
                     // An environment map's samples in strata of the
                     // coordinate its rows are drawn from (`sampling::
                     // strata`); an area light's count is the course's
@@ -173,7 +177,7 @@ impl DirectLights {
                 let mut sum = Rgb::ZERO;
                 for _ in 0..n {
                     let index = pmf.sample(sampler.get_1d()).cell;
-                    let strategy = self.strategy(lights, index);
+                    let strategy = self.strategy(lights, index, splits_map);
                     let uc = sampler.get_1d();
                     let light = &lights.lights[index];
                     if let Some(sample) = light.sample_li(point.hit.p, uc, sampler.get_2d()) {

@@ -42,8 +42,14 @@ pub enum PrevVertex {
     /// A scattering (non-delta) vertex at `p` whose continuation sampled
     /// the ray with density `bsdf_pdf` per steradian: the BSDF's, or at a
     /// diffuse vertex with caustic casters the mixture's
-    /// ([`World::continuation_pdf`]).
-    Scattering { p: Vec3, bsdf_pdf: f32 },
+    /// ([`World::continuation_pdf`]); `splits_map` says whether light
+    /// sampling there split an environment map's samples
+    /// ([`World::splits_map`]), which its MIS weights count.
+    Scattering {
+        p: Vec3,
+        bsdf_pdf: f32,
+        splits_map: bool,
+    },
 }
 
 /// What the found emission is, as far as its weight is concerned.
@@ -96,19 +102,23 @@ pub fn found_emission<I: Intersector>(
     let lights = &world.lights;
     // Light densities count only where light sampling at `prev` used MIS.
     let mis_at = match (direct, *prev) {
-        (DirectStrategy::Lights(d), PrevVertex::Scattering { p, .. }) if d.mis => Some((d, p)),
+        (DirectStrategy::Lights(d), PrevVertex::Scattering { p, splits_map, .. }) if d.mis => {
+            Some((d, p, splits_map))
+        }
         _ => None,
     };
     // The density with which light sampling at `prev` picks `ray.dir`
     // towards `light` (0 when unused).
     let density = |light: usize, hit: Option<LightHit>| {
-        mis_at.map_or(0.0, |(_, p)| lights.lights[light].pdf_li(p, ray.dir, hit))
+        mis_at.map_or(0.0, |(_, p, _)| {
+            lights.lights[light].pdf_li(p, ray.dir, hit)
+        })
     };
     // What light sampling at `prev` would have done for `light`, whose
     // density of `ray.dir` is `pdf_li` (0 when unused).
     let sampled = |light: usize, pdf_li: f32| match mis_at {
-        Some((d, _)) => {
-            let strategy = d.strategy(lights, light);
+        Some((d, _, splits_map)) => {
+            let strategy = d.strategy(lights, light, splits_map);
             Emitter::Sampled {
                 light_pdf: strategy.probability * pdf_li,
                 samples: strategy.samples,

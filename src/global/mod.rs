@@ -186,6 +186,7 @@ impl PathTracer {
                 PrevVertex::Scattering {
                     p: point.hit.p,
                     bsdf_pdf: sample.pdf(),
+                    splits_map: world.splits_map(&point.bsdf),
                 }
             };
             ray = point.hit.spawn_ray(point.frame.to_world(sample.wi));

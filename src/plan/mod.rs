@@ -7,7 +7,7 @@
 //! | light sampling | some light can be sampled and some surface scatters non-deltas | nothing: the integrator skips it at delta vertices anyway; the plan reports it |
 //! | multiple importance sampling | a light BSDF rays can find (area, emissive triangles, sky) and a non-delta BSDF | the BSDF density per light sample and the last ray of every path |
 //! | lens | `-b > 0` | the lens sample and its disk warp per camera ray |
-//! | environment samples ([`light_samples`]) | an environment map lights the scene and `-l` is not given | nothing: four samples of the map a vertex instead of one, less noise per second |
+//! | environment samples ([`light_samples`]) | an environment map lights the scene and `-l` is not given | nothing: four samples of the map instead of one at a vertex whose BSDF is no sharper than the map (and not diffuse in a scene that casts caustics), less noise per second |
 //! | caustic casters | a mirror, glass or smooth conductor sphere, or a mirror-like mesh (and not `--casters off`) | nothing: it adds a sampling strategy where a scene has caustics, and costs nothing where it has none |
 //!
 //! Specialising changes no expectation: the plan only drops work whose
@@ -40,6 +40,9 @@ pub struct BsdfKinds {
     pub mirror: bool,
     /// Glass or refraction.
     pub transmission: bool,
+    /// A conductor near a mirror: `alpha` at most
+    /// [`IMAGE_ALPHA`](crate::world::casters::images::IMAGE_ALPHA).
+    pub near_mirror: bool,
 }
 
 impl BsdfKinds {
@@ -62,7 +65,10 @@ impl BsdfKinds {
                 Bsdf::Black => {}
                 Bsdf::Diffuse(d) if d.albedo == Rgb::ZERO => {}
                 Bsdf::Diffuse(_) => kinds.diffuse = true,
-                Bsdf::Conductor(_) => kinds.glossy = true,
+                Bsdf::Conductor(c) => {
+                    kinds.glossy = true;
+                    kinds.near_mirror |= c.distribution.alpha() <= IMAGE_ALPHA;
+                }
                 bsdf => {
                     kinds.delta |= bsdf.is_delta();
                     kinds.mirror |= matches!(material, Material::Mirror { .. });
@@ -79,6 +85,12 @@ impl BsdfKinds {
     /// Whether some surface scatters light with a non-delta lobe.
     pub fn scatters(&self) -> bool {
         self.diffuse || self.glossy
+    }
+
+    /// Whether some surface casts caustics: a delta BSDF (mirror, glass)
+    /// or a conductor near a mirror.
+    pub fn casts_caustics(&self) -> bool {
+        self.delta || self.near_mirror
     }
 }
 

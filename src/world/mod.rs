@@ -15,9 +15,10 @@ use crate::environment::EnvironmentLight;
 use glam::{Vec2, Vec3};
 
 use crate::intersect::{Hit, Intersector, Ray};
-use crate::lights::{LightChoiceRule, LightConvention, LightSet};
+use crate::lights::{Light, LightChoiceRule, LightConvention, LightSet};
 use crate::materials::{Bsdf, BsdfOptions, BsdfSample, Density};
 use crate::math::float::ONE_BELOW_ONE;
+use crate::plan::{light_samples, BsdfKinds};
 use crate::scene::{Material, Scene};
 
 /// Choices about the scene's appearance that a render makes once.
@@ -41,6 +42,9 @@ pub struct World<'a, I> {
     pub bsdf_options: BsdfOptions,
     /// Smooth spheres that diffuse vertices sample towards.
     pub casters: Casters,
+    /// Whether some surface casts caustics
+    /// ([`crate::plan::BsdfKinds::casts_caustics`]).
+    pub caustics: bool,
 }
 
 impl<'a, I: Intersector> World<'a, I> {
@@ -56,6 +60,7 @@ impl<'a, I: Intersector> World<'a, I> {
             intersector,
             materials: &scene.materials,
             casters: Casters::new(scene, &lights, options.casters),
+            caustics: BsdfKinds::of(scene).casts_caustics(),
             lights,
             bsdf_options: options.bsdf,
         }
@@ -163,5 +168,17 @@ impl<'a, I: Intersector> World<'a, I> {
         } else {
             point.cones.mixture_pdf(bsdf_pdf, wi_world, &self.casters)
         }
+    }
+
+    /// Whether light sampling at a vertex of BSDF `bsdf` splits the
+    /// environment map's samples ([`crate::plan::light_samples`]: where
+    /// the map is as sharp as the BSDF, and at a diffuse vertex only where
+    /// nothing in the scene casts caustics); true without a map, where
+    /// nothing is split anyway.
+    pub fn splits_map(&self, bsdf: &Bsdf) -> bool {
+        self.lights.infinite().all(|(_, light)| match light {
+            Light::Environment(map) => light_samples::splits_map(bsdf, map, self.caustics),
+            _ => true,
+        })
     }
 }

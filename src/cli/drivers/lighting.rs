@@ -16,7 +16,7 @@ use crate::global::{DirectStrategy, PathTracer, Roulette};
 use crate::intersect::Intersector;
 use crate::lights::LightSet;
 use crate::plan::light_samples::with_environment_samples;
-use crate::plan::Plan;
+use crate::plan::{BsdfKinds, Plan};
 use crate::raygen::Camera;
 use crate::render::rendered::rate_image_path;
 use crate::render::{render_image, RenderSettings, Rendered};
@@ -120,14 +120,19 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
         if let Some(env) = environment {
             lights = lights.with_environment(env);
         }
+        let casters = Casters::new(&scene, &lights, args.world_options().casters);
         let plan = Plan::new(&scene, &lights, &part.tracer, &camera.lens)
             .with_sampler(args.sampler_kind())
-            .with_casters(&Casters::new(&scene, &lights, args.world_options().casters));
+            .with_casters(&casters);
         for line in &plan.lines {
             crate::say!("{line}")?;
         }
         if args.light_samples.is_none() && !args.no_plan {
-            crate::say!("{}", with_environment_samples(&part.tracer, &lights).1)?;
+            let caustics = BsdfKinds::of(&scene).casts_caustics();
+            crate::say!(
+                "{}",
+                with_environment_samples(&part.tracer, &lights, caustics).1
+            )?;
         }
         for w in &plan.warnings {
             crate::say!("plan: note: {w}")?;
@@ -144,7 +149,10 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
     let tracer = match (args.no_plan, args.light_samples) {
         (true, _) => part.tracer,
         (false, Some(_)) => plan.specialise(&part.tracer),
-        (false, None) => with_environment_samples(&plan.specialise(&part.tracer), &world.lights).0,
+        (false, None) => {
+            let tracer = plan.specialise(&part.tracer);
+            with_environment_samples(&tracer, &world.lights, world.caustics).0
+        }
     };
     let settings = args.render_settings();
     let rendered = render_lighting(&world, &tracer, &camera, &settings, part.adaptive);
