@@ -108,8 +108,11 @@ impl EnvironmentLight {
         let (w, h) = (map.width(), map.height());
         let mut weights = Vec::with_capacity(w * h);
         let mut radiant_integral = Rgb::ZERO;
-        for j in 0..h {
-            let sin_theta = (PI * (j as f32 + 0.5) / h as f32).sin();
+        // sin(theta) at each row's centre.
+        let row_sines: Vec<f32> = (0..h)
+            .map(|j| (PI * (j as f32 + 0.5) / h as f32).sin())
+            .collect();
+        for (j, &sin_theta) in row_sines.iter().enumerate() {
             for i in 0..w {
                 let cell = match weights_by {
                     EnvironmentWeights::CellAverage => map.cell_average(i, j),
@@ -122,16 +125,14 @@ impl EnvironmentLight {
         // Each cell spans (2 pi / w) (pi / h) in (phi, theta).
         radiant_integral *= 2.0 * PI * PI / (w * h) as f32;
         let distribution = Distribution2D::new(&weights, w, h);
-        map.set_cell_densities((0..w * h).map(|k| distribution.cell_pdf(k % w, k / w)));
-        let peak_density = (0..h)
-            .map(|j| {
-                let sin_theta = (PI * (j as f32 + 0.5) / h as f32).sin();
-                let row = (0..w)
-                    .map(|i| distribution.cell_pdf(i, j))
-                    .fold(0.0, f32::max);
-                row / (2.0 * PI * PI * sin_theta)
-            })
-            .fold(0.0, f32::max);
+        // The cells' densities, and on the way their largest per steradian.
+        let mut peak_density = 0.0f32;
+        map.set_cell_densities((0..w * h).map(|k| {
+            let pdf = distribution.cell_pdf(k % w, k / w);
+            peak_density = peak_density.max(pdf / row_sines[k / w]);
+            pdf
+        }));
+        peak_density /= 2.0 * PI * PI;
         EnvironmentLight {
             tables: Arc::new(Tables {
                 distribution,

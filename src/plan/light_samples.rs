@@ -1,6 +1,7 @@
 //! How many samples an environment light takes at each path vertex where
-//! `-l` does not say: [`ENVIRONMENT_SAMPLES`] (the plan's
-//! `environment samples` line; `-l N` gives every light `N`).
+//! `-l` does not say: [`ENVIRONMENT_SAMPLES`] where they pay, else one
+//! ([`splits_map`]; the plan's `environment samples` line; `-l N` gives
+//! every light `N`).
 //!
 //! Splitting: a camera path that takes `k` light samples at each vertex
 //! (and one BSDF continuation) estimates a pixel with the variance and
@@ -37,20 +38,20 @@
 //! and rough vertices, in scenes without caustics. Two kinds of vertex
 //! differ, and take one sample:
 //!
-//! - *A vertex whose BSDF is sharper than the map.* At a near-mirror
-//!   conductor the BSDF's own sample finds what the vertex reflects
-//!   better than the map's samples do, unless the map is sharper still:
-//!   a map's samples follow its radiance, so most of them fall outside a
-//!   narrow lobe and weigh nothing there, yet each costs a lookup, a
-//!   BSDF evaluation and often a shadow ray. So a vertex splits only
-//!   where the map's largest density per steradian (its
-//!   [`EnvironmentLight::peak_density`]) is at least the BSDF's
-//!   ([`lobe_peak_density`]: `1 / pi` for a diffuse surface, `1 / (4 pi
-//!   alpha^2)` for a conductor, its reflected direction's density at
-//!   normal incidence). A soft studio map (peak 2.6 per steradian) is
-//!   split at rough vertices (`alpha` 0.2: 2.0) and not at a near-mirror
-//!   (`alpha` 0.05: 32); a sun (about 10^4) at both, since there the
-//!   map's samples find the sun in a narrow lobe that the BSDF's would
+//! - *A conductor whose lobe is much sharper than the map.* A map's
+//!   samples follow its radiance, so at a near-mirror most of them fall
+//!   outside the lobe and weigh nothing, yet each costs a lookup, a BSDF
+//!   evaluation and often a shadow ray; the BSDF's own sample finds what
+//!   the lobe reflects. Splitting pays where the map's `k` samples, at
+//!   their densest, would take at least half of the power heuristic's
+//!   weight at the lobe's peak: `k max p_map >= max p_bsdf`, with the
+//!   map's [`EnvironmentLight::peak_density`] and Beckmann's `1 / (4 pi
+//!   alpha^2)`, so from [`smallest_split_alpha`] up. Under the studio map
+//!   (peak 2.6 per steradian) that is `alpha >= 0.087`: the near-mirror
+//!   copper (`alpha` 0.05) takes one sample, while copper of `alpha` 0.1
+//!   splits (a first rule without the `k`, cutting at 0.17, doubled the
+//!   latter's variance). Under a sun (about 10^4) every conductor splits:
+//!   there the map's samples find the sun in a lobe the BSDF's would
 //!   rarely reach.
 //! - *A diffuse vertex in a scene that casts caustics* (a mirror, glass
 //!   or near-mirror surface: [`crate::plan::BsdfKinds::casts_caustics`]).
@@ -62,9 +63,9 @@
 //!   sun, within 3 % too; docs/10, section 2).
 //!
 //! ```text
-//! k(vertex) = ENVIRONMENT_SAMPLES   if  max_w p_map(w) >= max_w p_bsdf(w),
-//!                                   and the vertex is not diffuse in a scene with caustics
-//!           = 1                     otherwise
+//! k(vertex) = ENVIRONMENT_SAMPLES   at a diffuse vertex in a scene without caustics,
+//!                                   at a conductor with alpha >= 1 / sqrt(4 pi k max_w p_map(w))
+//!           = 1                     elsewhere
 //! ```
 //!
 //! Any rule of the vertex alone leaves the image's expectation
@@ -80,33 +81,32 @@ use crate::materials::Bsdf;
 /// Samples an environment light takes at each vertex unless `-l` is given.
 pub const ENVIRONMENT_SAMPLES: u32 = 4;
 
-/// The largest density per steradian of `bsdf`'s sampling, as far as
-/// the split needs it: `1 / pi` (the cosine's peak) for a diffuse
-/// surface, `1 / (4 pi alpha^2)` for a conductor (Beckmann's `D(h) = 1 /
-/// (pi alpha^2)` at `h = n`, times the half vector's Jacobian `1 / (4
-/// wo.h)` at normal incidence), infinite for a delta BSDF (never light
-/// sampled) and 0 for a black one.
-pub fn lobe_peak_density(bsdf: &Bsdf) -> f32 {
-    use std::f32::consts::{FRAC_1_PI, PI};
-    match bsdf {
-        Bsdf::Black => 0.0,
-        Bsdf::Diffuse(_) => FRAC_1_PI,
-        Bsdf::Conductor(c) => {
-            let alpha = c.distribution.alpha();
-            1.0 / (4.0 * PI * alpha * alpha)
-        }
-        Bsdf::Mirror(_) | Bsdf::Refraction(_) | Bsdf::Glass(_) => f32::INFINITY,
-    }
+/// The roughness from which a conductor splits the samples of a map
+/// whose largest density per steradian is `map_peak`: where the map's
+/// [`ENVIRONMENT_SAMPLES`] samples, at their densest, would take at
+/// least half of the power heuristic's weight at the peak of the
+/// conductor's lobe, `k p_map >= p_bsdf`, with Beckmann's peak density
+/// `p_bsdf = 1 / (4 pi alpha^2)` (`D(h) = 1 / (pi alpha^2)` at `h = n`
+/// times the half vector's Jacobian `1 / (4 wo.h)`, at normal incidence):
+///
+/// ```text
+/// alpha >= 1 / sqrt(4 pi k max_w p_map(w))
+/// ```
+pub fn smallest_split_alpha(map_peak: f32) -> f32 {
+    (4.0 * std::f32::consts::PI * ENVIRONMENT_SAMPLES as f32 * map_peak)
+        .sqrt()
+        .recip()
 }
 
 /// Whether a vertex of BSDF `bsdf` splits the samples of the map `map`
-/// (in a scene with caustic casters when `caustics`): a diffuse vertex
-/// where there are no casters, and any vertex whose BSDF is no sharper
-/// than the map.
+/// (in a scene that casts caustics when `caustics`): a diffuse vertex
+/// where nothing casts caustics, a conductor from
+/// [`smallest_split_alpha`] up. Other BSDFs take no light samples.
 pub fn splits_map(bsdf: &Bsdf, map: &EnvironmentLight, caustics: bool) -> bool {
     match bsdf {
-        Bsdf::Diffuse(_) if caustics => false,
-        _ => map.peak_density() >= lobe_peak_density(bsdf),
+        Bsdf::Diffuse(_) => !caustics,
+        Bsdf::Conductor(c) => c.distribution.alpha() >= smallest_split_alpha(map.peak_density()),
+        _ => true,
     }
 }
 
@@ -149,21 +149,18 @@ pub fn with_environment_samples(
         ..d
     });
     let peak = map.peak_density();
-    let alpha = (1.0 / (4.0 * std::f32::consts::PI * peak)).sqrt();
+    let alpha = smallest_split_alpha(peak);
     let diffuse = if caustics {
-        "not at diffuse surfaces, whose noise here is the light of the mirror, glass or \
-         near-mirror surfaces"
-    } else if peak >= std::f32::consts::FRAC_1_PI {
-        "at diffuse surfaces"
+        "not at diffuse ones, whose noise here is the light of the mirror, glass or near-mirror \
+         surfaces"
     } else {
-        "not at diffuse surfaces, sharper than the map"
+        "and at diffuse ones"
     };
     let line = format!(
-        "plan: environment samples: {ENVIRONMENT_SAMPLES} a vertex whose BSDF is no sharper than \
-         the map (its peak density {peak:.3} per steradian), else 1: at conductors with alpha >= \
-         {alpha:.3}, {diffuse} (a map's samples follow its radiance alone; splitting them pays \
-         where they land in the BSDF's lobe and are the noise that counts; -l N gives every \
-         light N)"
+        "plan: environment samples: {ENVIRONMENT_SAMPLES} a vertex at conductors with alpha >= \
+         {alpha:.3} (the map's peak density is {peak:.3} per steradian), {diffuse}; 1 elsewhere \
+         (a map's samples follow its radiance alone; splitting them pays where they weigh in the \
+         BSDF's lobe and are the noise that counts; -l N gives every light N)"
     );
     (t, line)
 }

@@ -41,7 +41,7 @@ pub struct BsdfKinds {
     /// Glass or refraction.
     pub transmission: bool,
     /// A conductor near a mirror: `alpha` at most
-    /// [`IMAGE_ALPHA`](crate::world::casters::images::IMAGE_ALPHA).
+    /// [`IMAGE_ALPHA`].
     pub near_mirror: bool,
 }
 

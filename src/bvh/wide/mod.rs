@@ -68,8 +68,8 @@ pub const ARITY: usize = 8;
 /// tests it there. With the default alignment of 4, LLVM loaded it into
 /// a vector register and moved each half out, some cycles more on the
 /// chain each node waits on (a node's load, its test, the child's link,
-/// the child's load): +2–4 % on the benchmark's primary and random rays
-/// (`docs/maintainers/wide-bvh.md`, round 12).
+/// the child's load): +2–3 % on the benchmark's primary rays and +2–5 %
+/// on its random ones (`docs/maintainers/wide-bvh.md`, round 12).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[repr(C, align(8))]
 pub struct WideLink {
@@ -116,22 +116,27 @@ impl WideLink {
 
 /// A wide BVH: the root's box and link, the nodes and the triangle packs.
 ///
-/// Made by [`collapse::collapse`]; its fields are private to the crate,
+/// Made by [`collapse::collapse`]; its fields are private to `bvh`,
 /// since closest-hit traversal relies on every interior link indexing
 /// `nodes` (and reads the node without a bounds check).
 #[derive(Clone, Debug, Default)]
 pub struct WideBvh {
     /// Box of everything in the tree.
-    pub(crate) bounds: Aabb,
+    pub(in crate::bvh) bounds: Aabb,
     /// The root: a leaf for a tiny scene, else `nodes[0]`; `None` when empty.
-    pub(crate) root: Option<WideLink>,
+    pub(in crate::bvh) root: Option<WideLink>,
     /// Interior nodes; children of a node come after it.
-    pub(crate) nodes: Vec<WideNode>,
+    pub(in crate::bvh) nodes: Vec<WideNode>,
     /// Leaf contents, each leaf's packs contiguous.
-    pub(crate) packs: Vec<TrianglePack>,
+    pub(in crate::bvh) packs: Vec<TrianglePack>,
 }
 
 impl WideBvh {
+    /// Number of interior nodes and of triangle packs.
+    pub fn sizes(&self) -> (usize, usize) {
+        (self.nodes.len(), self.packs.len())
+    }
+
     /// Number of leaves, the depth of the deepest one (root depth 1), and
     /// the number of occupied lanes over all packs.
     pub fn leaf_stats(&self) -> (usize, usize, usize) {

@@ -61,13 +61,17 @@ impl WideBvh {
                     best = Some(t);
                 }
             } else {
-                debug_assert!((link.first as usize) < self.nodes.len());
-                // SAFETY: an interior link indexes `self.nodes`: `collapse`,
-                // which makes every `WideBvh` with nodes, pushes a node
-                // before it makes the link to it, and the fields are
-                // private to the crate (`validate` checks the links of
-                // any tree). Unchecked because the check cost 2–3 % on
-                // primary rays (`docs/maintainers/wide-bvh.md`, round 12).
+                debug_assert!(!link.is_empty() && (link.first as usize) < self.nodes.len());
+                // SAFETY: a link followed here indexes `self.nodes`. It
+                // is a child the slab test hit, so not an empty slot (an
+                // empty box is entered by no ray: its distances are +inf
+                // and -inf, and `traversable` turned away the non-finite
+                // rays whose NaN could mark it), hence an interior node's
+                // link or the root; `collapse`, which makes every
+                // `WideBvh` with nodes, pushes a node before it makes the
+                // link to it, and the fields are private to `bvh`.
+                // Unchecked because the check cost 2–3 % on primary rays
+                // (`docs/maintainers/wide-bvh.md`, round 12).
                 let node = unsafe { self.nodes.get_unchecked(link.first as usize) };
                 let (mask, enter) = T::hit(node, &boxes, t_max);
                 if mask != 0 {

@@ -166,15 +166,14 @@ pub fn bvh_benchmark(threads: Option<usize>, accel: AccelArg) -> Result<()> {
                 (accel, [binary + collapse, binary, collapse])
             });
             let (leaves, depth, lanes) = accel.wide.leaf_stats();
+            let (nodes, packs) = accel.wide.sizes();
             crate::say!(
                 "wide BVH: build {total} (binary SAH build {binary}, collapse {collapse})"
             )?;
             crate::say!(
-                "triangles {} nodes {} leaves {leaves} depth {depth} packs {} lanes used {:.1} %",
+                "triangles {} nodes {nodes} leaves {leaves} depth {depth} packs {packs} lanes used {:.1} %",
                 accel.primitives.len(),
-                accel.wide.nodes.len(),
-                accel.wide.packs.len(),
-                100.0 * lanes as f64 / (4 * accel.wide.packs.len()).max(1) as f64
+                100.0 * lanes as f64 / (4 * packs).max(1) as f64
             )?;
             trace_benchmark_sets(&accel, threads)?;
         }

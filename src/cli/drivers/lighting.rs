@@ -16,7 +16,7 @@ use crate::global::{DirectStrategy, PathTracer, Roulette};
 use crate::intersect::Intersector;
 use crate::lights::LightSet;
 use crate::plan::light_samples::with_environment_samples;
-use crate::plan::{BsdfKinds, Plan};
+use crate::plan::Plan;
 use crate::raygen::Camera;
 use crate::render::rendered::rate_image_path;
 use crate::render::{render_image, RenderSettings, Rendered};
@@ -128,7 +128,7 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
             crate::say!("{line}")?;
         }
         if args.light_samples.is_none() && !args.no_plan {
-            let caustics = BsdfKinds::of(&scene).casts_caustics();
+            let caustics = plan.bsdfs.casts_caustics();
             crate::say!(
                 "{}",
                 with_environment_samples(&part.tracer, &lights, caustics).1
