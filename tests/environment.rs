@@ -20,8 +20,8 @@
 mod common;
 
 use common::{
-    accel, assert_mean_matches, assert_means_agree, diffuse, lumpy_map, sphere_on_floor, tracer,
-    MeanEstimate, SceneBuilder, ALPHA, HEMISPHERE, LIGHTS,
+    accel, assert_mean_matches, assert_means_agree, ball_on_floor, diffuse, lumpy_map,
+    sphere_on_floor, tracer, MeanEstimate, SceneBuilder, ALPHA, HEMISPHERE, LIGHTS,
 };
 use glam::Vec3;
 use pathtracer::direct::DirectLights;
@@ -280,22 +280,6 @@ fn four_environment_samples_a_vertex_change_the_noise_not_the_image() {
 /// differ by 10.9 standard errors.
 #[test]
 fn the_map_is_split_only_where_it_pays_and_the_image_stays() {
-    let ball_on_floor = |ball: Material| {
-        let mut b = SceneBuilder::new();
-        let floor = b.material(diffuse(0.5));
-        let ball = b.material(ball);
-        b.quad(
-            floor,
-            [
-                Vec3::new(-2.0, 0.0, 2.0),
-                Vec3::new(2.0, 0.0, 2.0),
-                Vec3::new(2.0, 0.0, -2.0),
-                Vec3::new(-2.0, 0.0, -2.0),
-            ],
-        );
-        b.sphere(Vec3::new(0.0, 0.5, 0.0), 0.5, ball);
-        b.finish()
-    };
     let env = EnvironmentLight::new(lumpy_map(), EnvironmentSampling::Importance);
     assert!(
         (1.0..3.0).contains(&env.peak_density()),

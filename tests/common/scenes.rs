@@ -302,9 +302,14 @@ pub fn lumpy_map() -> EnvironmentMap {
 
 /// A sphere of radius 0.5 resting on a floor quad.
 pub fn sphere_on_floor() -> Scene {
+    ball_on_floor(diffuse(0.8))
+}
+
+/// [`sphere_on_floor`] with the sphere made of `ball`.
+pub fn ball_on_floor(ball: Material) -> Scene {
     let mut b = SceneBuilder::new();
     let floor = b.material(diffuse(0.5));
-    let ball = b.material(diffuse(0.8));
+    let ball = b.material(ball);
     b.quad(
         floor,
         [
