@@ -164,3 +164,66 @@ pub fn with_environment_samples(
     );
     (t, line)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::environment::{EnvironmentMap, EnvironmentSampling};
+    use crate::materials::{BsdfOptions, Conductor, Diffuse, MicrofacetSampling};
+    use crate::math::Rgb;
+    use std::f32::consts::PI;
+
+    /// The threshold is where the map's `k` samples at their densest
+    /// match Beckmann's peak density `1 / (4 pi alpha^2)`, written here
+    /// from the definition, not from the function.
+    #[test]
+    fn the_threshold_is_where_k_map_samples_match_the_lobes_peak() {
+        for map_peak in [1.0 / (4.0 * PI), 0.5, 2.648, 163.0, 1.0e4] {
+            let alpha = smallest_split_alpha(map_peak);
+            let lobe_peak = 1.0 / (4.0 * PI * alpha * alpha);
+            let k_map = ENVIRONMENT_SAMPLES as f32 * map_peak;
+            assert!(
+                (lobe_peak / k_map - 1.0).abs() < 1e-5,
+                "{map_peak}: {alpha}"
+            );
+        }
+        assert!((smallest_split_alpha(2.648) - 0.0867).abs() < 1e-4);
+    }
+
+    /// Under a constant map (density `1 / (4 pi)` everywhere, so the
+    /// threshold is `alpha = 0.5`) a conductor splits just above it and
+    /// not just below; a diffuse vertex splits unless the scene casts
+    /// caustics; a delta BSDF takes no light samples (true, unused).
+    #[test]
+    fn who_splits_under_a_constant_map() {
+        let map = EnvironmentMap::from_fn("constant", 32, 16, |_| Rgb::ONE).unwrap();
+        let light = EnvironmentLight::new(map, EnvironmentSampling::Importance);
+        let peak = light.peak_density();
+        assert!((peak * 4.0 * PI - 1.0).abs() < 0.01, "{peak}");
+        let conductor = |alpha| {
+            Bsdf::Conductor(Conductor::new(
+                alpha,
+                Rgb::ONE,
+                Rgb::ONE,
+                MicrofacetSampling::default(),
+            ))
+        };
+        assert!(splits_map(&conductor(0.51), &light, false));
+        assert!(!splits_map(&conductor(0.49), &light, false));
+        assert!(!splits_map(&conductor(0.49), &light, true));
+        let diffuse = Bsdf::Diffuse(Diffuse { albedo: Rgb::ONE });
+        assert!(splits_map(&diffuse, &light, false));
+        assert!(!splits_map(&diffuse, &light, true));
+        let mirror = Bsdf::new(
+            &crate::scene::Material::Mirror {
+                reflectance: Rgb::ONE,
+            },
+            true,
+            BsdfOptions::default(),
+        );
+        assert!(splits_map(&mirror, &light, true));
+        // Uniform sampling's density is the flattest: 1 / (4 pi).
+        let uniform = light.with_sampling(EnvironmentSampling::Uniform);
+        assert!((uniform.peak_density() * 4.0 * PI - 1.0).abs() < 1e-6);
+    }
+}
