@@ -171,10 +171,10 @@ impl<'a, I: Intersector> World<'a, I> {
     }
 
     /// Whether light sampling at a vertex of BSDF `bsdf` splits the
-    /// environment map's samples ([`crate::plan::light_samples`]: where
-    /// the map is as sharp as the BSDF, and at a diffuse vertex only where
-    /// nothing in the scene casts caustics); true without a map, where
-    /// nothing is split anyway.
+    /// environment map's samples ([`crate::plan::light_samples`]: at a
+    /// conductor from `smallest_split_alpha` up, at a diffuse vertex only
+    /// where nothing in the scene casts caustics); true without a map,
+    /// where nothing is split anyway.
     pub fn splits_map(&self, bsdf: &Bsdf) -> bool {
         self.lights.infinite().all(|(_, light)| match light {
             Light::Environment(map) => light_samples::splits_map(bsdf, map, self.caustics),
