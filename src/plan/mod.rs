@@ -26,7 +26,7 @@ use crate::materials::{Bsdf, BsdfOptions};
 use crate::math::{luminance, Rgb};
 use crate::sampling::SamplerKind;
 use crate::scene::{Material, Scene};
-use crate::world::casters::images::IMAGE_ALPHA;
+use crate::world::casters::images::{self, IMAGE_ALPHA};
 use crate::world::casters::{Casters, CASTER_PROBABILITY, SMOOTH_ALPHA};
 
 /// The kinds of scattering a scene's used materials have.
@@ -40,8 +40,8 @@ pub struct BsdfKinds {
     pub mirror: bool,
     /// Glass or refraction.
     pub transmission: bool,
-    /// A conductor near a mirror: `alpha` at most
-    /// [`IMAGE_ALPHA`].
+    /// A conductor near a mirror, mirror-like as the caustic casters
+    /// count it ([`images::image_spread`]: `alpha` at most [`IMAGE_ALPHA`]).
     pub near_mirror: bool,
 }
 
@@ -65,9 +65,9 @@ impl BsdfKinds {
                 Bsdf::Black => {}
                 Bsdf::Diffuse(d) if d.albedo == Rgb::ZERO => {}
                 Bsdf::Diffuse(_) => kinds.diffuse = true,
-                Bsdf::Conductor(c) => {
+                Bsdf::Conductor(_) => {
                     kinds.glossy = true;
-                    kinds.near_mirror |= c.distribution.alpha() <= IMAGE_ALPHA;
+                    kinds.near_mirror |= images::image_spread(material).is_some();
                 }
                 bsdf => {
                     kinds.delta |= bsdf.is_delta();

@@ -120,10 +120,9 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
         if let Some(env) = environment {
             lights = lights.with_environment(env);
         }
-        let casters = Casters::new(&scene, &lights, args.world_options().casters);
         let plan = Plan::new(&scene, &lights, &part.tracer, &camera.lens)
             .with_sampler(args.sampler_kind())
-            .with_casters(&casters);
+            .with_casters(&Casters::new(&scene, &lights, args.world_options().casters));
         for line in &plan.lines {
             crate::say!("{line}")?;
         }
