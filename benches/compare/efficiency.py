@@ -10,7 +10,11 @@ seeds: for independent estimates X1, X2 of the same image,
 
 which needs no converged reference and has no reference noise in it. With a
 scrambled low-discrepancy sampler, different seeds are independent
-randomisations, so the same identity holds.
+randomisations, so the same identity holds. With `--seeds N` each renderer
+renders N seeds and the variance is each pixel's sample variance over
+them (`N - 1` degrees of freedom, the formula above for N = 2): where a
+scene's error is a few rare samples of huge value (a sun seen through
+glass), two renders say little about it, and more seeds say more.
 
 Each renderer runs its own default estimator at the same samples per
 pixel: Mitsuba's path tracer one emitter sample a vertex, this project
@@ -18,12 +22,13 @@ the render plan's (one sample a vertex of each light in the scene, four
 of an environment map: `plan::light_samples`). `-- -l 1` after the
 options gives every light of ours one sample, as the course's `-l 1`.
 
-For each scene and repetition: this project renders twice (`--seed 0`,
-`--seed 1`; time from its `render: S s` line, which excludes loading and
-the BVH build), then Mitsuba renders seeds 0 and 1 in one process
-(`benches/compare/mitsuba_timed.py`; time of the second render, with its
-kernels compiled). Times are medians over repetitions; the machine is
-shared, so only ratios from one run mean anything.
+For each scene and repetition: this project renders each seed (`--seed 0`,
+`--seed 1`, ...; time from its `render: S s` line, which excludes loading
+and the BVH build), then Mitsuba renders the same seeds in one process
+(`benches/compare/mitsuba_timed.py`; times of the renders after the
+first, whose kernels are compiled). Times are medians over repetitions
+and seeds; the machine is shared, so only ratios from one run mean
+anything.
 
 The emitters' own pixels are a small part of the image but can hold most
 of its squared error (the light's edge pixels, with a random position in
@@ -57,6 +62,7 @@ cut into nine (the issue ran it at 16 spp: `--spp 16`).
 
     python3 benches/compare/efficiency.py [--reps 3] [--only CBbunny ...] [-- EXTRA PATHTRACER FLAGS]
     python3 benches/compare/efficiency.py --scene FILE.dae --depth 5 [--env MAP.hdr]   # any scene, any map
+    python3 benches/compare/efficiency.py --seeds 8 ...   # variance from 8 renders of each renderer
 """
 import argparse
 import os
@@ -248,10 +254,13 @@ def median_3x3(image):
     return np.median(np.stack(shifted), axis=0)
 
 
-def variance(a, b, mask=None):
-    """Per-render variance from two independent renders: mean of (a - b)^2 / 2,
-    over the pixels of `mask` if given."""
-    per_pixel = ((a - b) ** 2).mean(-1) / 2
+def variance(images, mask=None):
+    """Per-render variance from independent renders of one image: each pixel's
+    sample variance over them (for two, (a - b)^2 / 2), averaged over the
+    channels and the pixels of `mask` if given."""
+    import numpy as np
+
+    per_pixel = np.stack(images).var(0, ddof=1).mean(-1)
     return float(per_pixel.mean() if mask is None else per_pixel[mask].mean())
 
 
@@ -278,13 +287,17 @@ def main():
     ap.add_argument("--spp", type=int, default=64)
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--reps", type=int, default=3)
+    ap.add_argument("--seeds", type=int, default=2, help="renders of each renderer (at least 2)")
     ap.add_argument("--only", nargs="*", choices=sorted(SCENES))
     ap.add_argument("--out", default="efficiency-out")
     a = ap.parse_args()
+    if a.seeds < 2:
+        sys.exit("--seeds: at least 2 renders are needed for a variance")
     os.makedirs(a.out, exist_ok=True)
     log = os.path.join(a.out, "log.txt")
     w, h = a.size
-    print(f"{w}x{h}, {a.spp} spp, -t {a.threads}, {a.reps} repetitions; our extra flags: {extra}")
+    print(f"{w}x{h}, {a.spp} spp, -t {a.threads}, {a.reps} repetitions of {a.seeds} seeds; "
+          f"our extra flags: {extra}")
     print("| scene | ours: time (s) | ours: MSE | Mitsuba: time (s) | Mitsuba: MSE "
           "| efficiency ours/Mitsuba | without emitters | mean ours/Mitsuba |")
     print("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |")
@@ -306,7 +319,7 @@ def main():
         ours_t, mi_t = [], []
         for rep in range(a.reps):
             images = []
-            for seed in (0, 1):
+            for seed in range(a.seeds):
                 path = os.path.join(a.out, f"{name}-ours-{seed}.exr")
                 cmd = [a.pathtracer, scene, "-r", str(w), str(h), "-s", str(a.spp),
                        "-m", str(depth), "-t", str(a.threads), "--seed", str(seed), "-f", path]
@@ -314,24 +327,26 @@ def main():
                 out = run(cmd + extra, log)
                 ours_t.append(float(re.search(r"render: ([0-9.]+) s", out).group(1)))
                 images.append(path)
-            last = os.path.join(a.out, f"{name}-mitsuba-1.exr")
+            last = os.path.join(a.out, f"{name}-mitsuba-last.exr")
+            each = os.path.join(a.out, f"{name}-mitsuba-")
             cmd = [sys.executable, os.path.join(HERE, "mitsuba_timed.py"), a.tool, last, "--",
                    scene, os.path.join(a.out, f"{name}-mitsuba-avg.exr"), "--size", str(w), str(h),
-                   "--spp", str(a.spp), "--seeds", "2", "--m", str(depth)]
+                   "--spp", str(a.spp), "--seeds", str(a.seeds), "--m", str(depth),
+                   "--each", each]
             cmd += ["--env", env] if env else []
             out = run(cmd, log)
-            mi_t.append(float(re.findall(r"mitsuba render 2: ([0-9.]+) s", out)[-1]))
+            # Render 1 compiles the kernels; the others are timed.
+            timed = re.findall(r"mitsuba render ([0-9]+): ([0-9.]+) s", out)
+            mi_t += [float(t) for k, t in timed if int(k) > 1]
         ours = [read_rgb(p) for p in images]
-        # The tool's output is the mean of seeds 0 and 1; with seed 1 that gives seed 0.
+        mitsuba = [read_rgb(f"{each}{seed}.exr") for seed in range(a.seeds)]
         mi_avg = read_rgb(os.path.join(a.out, f"{name}-mitsuba-avg.exr"))
-        mi_1 = read_rgb(last)
-        mitsuba = [2 * mi_avg - mi_1, mi_1]
-        ours_var, mi_var = variance(*ours), variance(*mitsuba)
+        ours_var, mi_var = variance(ours), variance(mitsuba)
         t_ours, t_mi = statistics.median(ours_t), statistics.median(mi_t)
         ratio = (mi_var * t_mi) / (ours_var * t_ours)
-        ours_mean, mi_mean = (ours[0] + ours[1]) / 2, mi_avg
+        ours_mean, mi_mean = sum(ours) / len(ours), mi_avg
         mask = (median_3x3(luminance(ours_mean)) < 1) & (median_3x3(luminance(mi_mean)) < 1)
-        masked = (variance(*mitsuba, mask) * t_mi) / (variance(*ours, mask) * t_ours)
+        masked = (variance(mitsuba, mask) * t_mi) / (variance(ours, mask) * t_ours)
         bias = luminance(ours_mean)[mask].mean() / luminance(mi_mean)[mask].mean()
         print(f"| {name} (m={depth}) | {t_ours:.2f} | {ours_var:.3e} | {t_mi:.2f} | {mi_var:.3e} "
               f"| {ratio:.2f} | {masked:.2f} | {bias:.4f} |", flush=True)
