@@ -63,6 +63,7 @@ cut into nine (the issue ran it at 16 spp: `--spp 16`).
     python3 benches/compare/efficiency.py [--reps 3] [--only CBbunny ...] [-- EXTRA PATHTRACER FLAGS]
     python3 benches/compare/efficiency.py --scene FILE.dae --depth 5 [--env MAP.hdr]   # any scene, any map
     python3 benches/compare/efficiency.py --seeds 8 ...   # variance from 8 renders of each renderer
+    python3 benches/compare/efficiency.py --seeds 8 --spikes 3e4 ...   # and where rare huge samples make it
 """
 import argparse
 import os
@@ -264,6 +265,23 @@ def variance(images, mask=None):
     return float(per_pixel.mean() if mask is None else per_pixel[mask].mean())
 
 
+def spikes(images, spp, threshold):
+    """Where single samples of huge value make a renderer's error: each
+    render's pixel luminance minus the median of all the renders at that
+    pixel, times `spp`, is the value one sample would need to explain the
+    difference. Returns (how many render pixels exceed `threshold`, the
+    mask of pixels where some render does, the share of the variance in
+    those pixels)."""
+    import numpy as np
+
+    lum = luminance(np.stack(images))
+    excess = (lum - np.median(lum, 0)) * spp
+    over = excess > threshold
+    pixels = over.any(0)
+    per_pixel = np.stack(images).var(0, ddof=1).mean(-1)
+    return int(over.sum()), pixels, float(per_pixel[pixels].sum() / per_pixel.sum())
+
+
 def luminance(rgb):
     return rgb @ [0.2126, 0.7152, 0.0722]
 
@@ -288,11 +306,17 @@ def main():
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--reps", type=int, default=3)
     ap.add_argument("--seeds", type=int, default=2, help="renders of each renderer (at least 2)")
+    ap.add_argument("--spikes", type=float, metavar="VALUE",
+                    help="also report the samples above VALUE (as a render's excess over the "
+                         "renders' median at its pixel, times the samples per pixel; needs "
+                         "--seeds 3 or more) and the pixels they share between the renderers")
     ap.add_argument("--only", nargs="*", choices=sorted(SCENES))
     ap.add_argument("--out", default="efficiency-out")
     a = ap.parse_args()
     if a.seeds < 2:
         sys.exit("--seeds: at least 2 renders are needed for a variance")
+    if a.spikes is not None and a.seeds < 3:
+        sys.exit("--spikes: needs --seeds 3 or more (a median of two renders is their mean)")
     os.makedirs(a.out, exist_ok=True)
     log = os.path.join(a.out, "log.txt")
     w, h = a.size
@@ -350,6 +374,14 @@ def main():
         bias = luminance(ours_mean)[mask].mean() / luminance(mi_mean)[mask].mean()
         print(f"| {name} (m={depth}) | {t_ours:.2f} | {ours_var:.3e} | {t_mi:.2f} | {mi_var:.3e} "
               f"| {ratio:.2f} | {masked:.2f} | {bias:.4f} |", flush=True)
+        if a.spikes is not None:
+            found = {who: spikes(imgs, a.spp, a.spikes) for who, imgs in
+                     (("ours", ours), ("Mitsuba", mitsuba))}
+            for who, (count, pixels, share) in found.items():
+                print(f"  {name}, {who}: {count} samples above {a.spikes:g} in {int(pixels.sum())} "
+                      f"pixels, holding {100 * share:.1f} % of the variance", flush=True)
+            common = found["ours"][1] & found["Mitsuba"][1]
+            print(f"  {name}: {int(common.sum())} of those pixels in both renderers", flush=True)
 
 
 if __name__ == "__main__":
