@@ -192,8 +192,12 @@ impl PathTracer {
             ray = point.hit.spawn_ray(point.frame.to_world(sample.wi));
             // What the ray reads of the environment if it escapes loads
             // while it is traced (a miss overlapped, not waited for), where
-            // the light it finds counts.
-            if self.counts(bounces) {
+            // the light it finds counts; not for a ray refracted into a
+            // denser medium (into glass from the air), which meets the
+            // object's far side first (the hint's direction-to-texel
+            // mapping was 2.6 % of the glass bunny's time under a sun).
+            let enters_denser = sample.transmission && sample.eta > 1.0;
+            if self.counts(bounces) && !enters_denser {
                 for (_, light) in world.lights.infinite() {
                     light.prefetch_escape(ray.dir);
                 }
