@@ -3,8 +3,8 @@
 
 Efficiency is 1 / (MSE x render time) at equal samples per pixel. Both
 renderers are unbiased (checked: the last column), so a render's MSE is its
-variance, estimated without a reference from two renders with different
-seeds: for independent estimates X1, X2 of the same image,
+variance, estimated without a reference from two (or `--seeds N`)
+renders with different seeds: for independent estimates X1, X2 of the same image,
 
     E[(X1 - X2)^2] / 2 = Var[X]      (per pixel and channel, averaged)
 
@@ -15,6 +15,11 @@ renders N seeds and the variance is each pixel's sample variance over
 them (`N - 1` degrees of freedom, the formula above for N = 2): where a
 scene's error is a few rare samples of huge value (a sun seen through
 glass), two renders say little about it, and more seeds say more.
+`--spikes VALUE` then reports where such samples are: the render pixels
+(a seed's pixel) whose excess over the renders' median there, times the
+samples per pixel, is above VALUE (the value one sample would need to
+explain it), the pixels they are in, those pixels' share of the
+variance, and how many of those pixels both renderers share.
 
 Each renderer runs its own default estimator at the same samples per
 pixel: Mitsuba's path tracer one emitter sample a vertex, this project
@@ -45,7 +50,8 @@ mask and with it the firefly's share of its renderer's error and mean
 
 Needs Python with numpy and mitsuba (a venv: `pip install mitsuba numpy`,
 and `apt-get install -y libllvm19`), the Mitsuba tool
-`../shared/tools/mitsuba/dae_reference.py` (outside this repository), and
+`../shared/tools/mitsuba/dae_reference.py` (outside this repository; a
+version with `--each`, which writes each seed's render), and
 `cargo build --release`. The environment maps are looked for in `--maps`
 (default: the current directory); the project makes its own (the error
 says how): the studio map, and outdoor skies with a sun (`sky-2k.hdr`,
@@ -307,9 +313,9 @@ def main():
     ap.add_argument("--reps", type=int, default=3)
     ap.add_argument("--seeds", type=int, default=2, help="renders of each renderer (at least 2)")
     ap.add_argument("--spikes", type=float, metavar="VALUE",
-                    help="also report the samples above VALUE (as a render's excess over the "
-                         "renders' median at its pixel, times the samples per pixel; needs "
-                         "--seeds 3 or more) and the pixels they share between the renderers")
+                    help="also report the render pixels (a seed's pixel) whose excess over the "
+                         "renders' median there, times the samples per pixel, is above VALUE "
+                         "(needs --seeds 3 or more), and the pixels both renderers share")
     ap.add_argument("--only", nargs="*", choices=sorted(SCENES))
     ap.add_argument("--out", default="efficiency-out")
     a = ap.parse_args()
@@ -359,7 +365,10 @@ def main():
                    "--each", each]
             cmd += ["--env", env] if env else []
             out = run(cmd, log)
-            # Render 1 compiles the kernels; the others are timed.
+            # The wrapper's render 1 (the tool's seed 0) compiles the
+            # kernels; the others are timed. LAST.exr, the wrapper's copy
+            # of the last render, is a by-product here: the seeds' own
+            # files are read.
             timed = re.findall(r"mitsuba render ([0-9]+): ([0-9.]+) s", out)
             mi_t += [float(t) for k, t in timed if int(k) > 1]
         ours = [read_rgb(p) for p in images]
@@ -378,8 +387,9 @@ def main():
             found = {who: spikes(imgs, a.spp, a.spikes) for who, imgs in
                      (("ours", ours), ("Mitsuba", mitsuba))}
             for who, (count, pixels, share) in found.items():
-                print(f"  {name}, {who}: {count} samples above {a.spikes:g} in {int(pixels.sum())} "
-                      f"pixels, holding {100 * share:.1f} % of the variance", flush=True)
+                print(f"  {name}, {who}: {count} render pixels above {a.spikes:g}, in "
+                      f"{int(pixels.sum())} pixels holding {100 * share:.1f} % of the variance",
+                      flush=True)
             common = found["ours"][1] & found["Mitsuba"][1]
             print(f"  {name}: {int(common.sum())} of those pixels in both renderers", flush=True)
 

@@ -1,15 +1,15 @@
 #!/usr/bin/env python3
 """Runs the Mitsuba 3 reference script with each of its renders timed.
 
-    mitsuba_timed.py TOOL LAST.exr -- SCENE.dae OUT.exr --spp N --seeds 2 ...
+    mitsuba_timed.py TOOL LAST.exr -- SCENE.dae OUT.exr --spp N --seeds N [--each PREFIX] ...
 
 TOOL is `../shared/tools/mitsuba/dae_reference.py` (a maintainers' tool,
 outside this repository); the arguments after `--` are its own. The tool
 renders `--seeds` times and writes their average; this wrapper times every
 `mi.render` call alone (kernel compilation happens in the first one, scene
 loading outside all of them), prints `mitsuba render K: S s`, and writes the
-last call's image, one seed at `--spp` samples, to LAST.exr. Timing the
-second of two calls measures rendering with compiled kernels, the fair
+last call's image, one seed at `--spp` samples, to LAST.exr. The calls
+after the first measure rendering with compiled kernels, the fair
 counterpart of this project's `render: S s` line, which excludes set-up.
 """
 import os

@@ -193,9 +193,10 @@ impl PathTracer {
             // What the ray reads of the environment if it escapes loads
             // while it is traced (a miss overlapped, not waited for), where
             // the light it finds counts; not for a ray refracted into a
-            // denser medium (into glass from the air), which meets the
-            // object's far side first (the hint's direction-to-texel
-            // mapping was 2.6 % of the glass bunny's time under a sun).
+            // denser medium (into glass from the air), which meets a
+            // closed object's far side first (the hint as a whole was
+            // 2.6 % of the glass bunny's time under a sun; skipping it
+            // here saved 1.5 %). Only speed depends on this.
             let enters_denser = sample.transmission && sample.eta > 1.0;
             if self.counts(bounces) && !enters_denser {
                 for (_, light) in world.lights.infinite() {
