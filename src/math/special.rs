@@ -7,6 +7,26 @@
 
 use std::f64::consts::FRAC_2_SQRT_PI;
 
+/// `x.floor()`, exactly, without a call: on baseline x86-64 (no SSE4.1
+/// `roundss`) `f32::floor` is a call into the C library, and the map
+/// lookup makes two a ray (`perf`: 1.3 % of the glass bunny under a sun).
+/// Floats of magnitude `2^23` or more are integers already, and a NaN
+/// stays a NaN; below that, truncation towards zero is one step too high
+/// for a negative non-integer.
+#[inline(always)]
+pub fn floor(x: f32) -> f32 {
+    if x.abs() >= 8_388_608.0 || x.is_nan() {
+        return x;
+    }
+    let t = x as i32 as f32;
+    if t > x {
+        t - 1.0
+    } else {
+        // The sign keeps -0.0 as the library gives it.
+        t.copysign(x)
+    }
+}
+
 /// `atan(t)` for `t` in `[0, 1]` (Abramowitz and Stegun 1964, formula
 /// 4.4.49: `atan t = t (1 + a2 t^2 + ... + a16 t^16) + e`, `|e| <= 2e-8`).
 fn atan_unit(t: f32) -> f32 {
@@ -137,6 +157,37 @@ mod tests {
         }
         assert_eq!(erfinv(-1.0), -6.0);
         assert!(erfinv(1.0 - 1e-12) > 4.9);
+    }
+
+    /// Bit for bit the library's floor, around every integer step, at the
+    /// ends of the fast range and beyond it, for zeros, infinities and NaN.
+    #[test]
+    fn the_fast_floor_is_the_library_floor() {
+        let mut values = vec![
+            0.0f32,
+            -0.0,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::MAX,
+            f32::MIN,
+        ];
+        for k in -1000..=1000 {
+            let x = k as f32 * 0.37;
+            values.extend([
+                x,
+                x.next_up(),
+                x.next_down(),
+                k as f32,
+                (k as f32).next_down(),
+            ]);
+        }
+        for big in [8_388_607.5f32, 8_388_608.0, 8_388_609.0, 1e10, 3e9] {
+            values.extend([big, -big, big.next_down(), -big.next_down()]);
+        }
+        for x in values {
+            assert_eq!(floor(x).to_bits(), x.floor().to_bits(), "floor({x})");
+        }
+        assert!(floor(f32::NAN).is_nan());
     }
 
     /// Against `f64::atan2` on 100,000 angles around the circle at radii

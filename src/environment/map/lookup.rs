@@ -15,6 +15,7 @@ use glam::{Vec2, Vec3, Vec4};
 use super::{direction_to_uv, EnvironmentMap};
 use crate::math::distribution::cell_of;
 use crate::math::prefetch::prefetch_lines;
+use crate::math::special::floor;
 use crate::math::Rgb;
 
 impl EnvironmentMap {
@@ -61,7 +62,7 @@ impl EnvironmentMap {
     #[inline(always)]
     fn lookup_columns(&self, u: f32) -> (usize, usize, f32) {
         let x = u * self.width as f32 - 0.5;
-        let x0 = x.floor();
+        let x0 = floor(x);
         // Wrapping by comparison, not by a division per texel (a hot path).
         let w = self.width as i64;
         let left = match x0 as i64 {
@@ -77,7 +78,7 @@ impl EnvironmentMap {
     #[inline(always)]
     fn lookup_rows(&self, v: f32) -> (usize, usize, f32) {
         let y = v * self.height as f32 - 0.5;
-        let y0 = y.floor();
+        let y0 = floor(y);
         let (j, last) = (y0 as i64, self.height as i64 - 1);
         let top = j.clamp(0, last) as usize * self.width;
         let bottom = (j + 1).clamp(0, last) as usize * self.width;
