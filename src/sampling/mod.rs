@@ -92,7 +92,7 @@ impl SamplerKind {
 
 /// The sampler a render holds: one of the two, dispatched by a match.
 ///
-/// The ZSobol variant carries its 2 KB cache inline: a render makes one
+/// The ZSobol variant carries its caches inline (about 3.5 KB): a render makes one
 /// per tile and never moves it in a loop, and a box would cost a pointer
 /// chase per number.
 #[allow(clippy::large_enum_variant)]
