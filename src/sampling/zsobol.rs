@@ -35,7 +35,12 @@
 //! related hashes.) The pixel's own digits (the top `R`) are shuffled once
 //! per pixel and dimension and kept (for the first [`CACHED_DIMENSIONS`]
 //! dimensions): a pixel's later samples shuffle only their `L` sample
-//! digits.
+//! digits. Of these, all but the lowest base-4 digit, and the permutation
+//! of the lowest, hash the same bits for four consecutive samples, so
+//! they too are kept per dimension: three samples in four hash no digit
+//! at all (at 64 samples a pixel, 27 % fewer sampler instructions on the
+//! glass bunny under a sun, `callgrind`; the same numbers, checked
+//! against the definition digit by digit).
 //!
 //! Each call for a dimension pair (`get_2d`) takes Sobol' dimensions 0
 //! and 1 at the shuffled index, Owen-scrambled with two seeds hashed from
