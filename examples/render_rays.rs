@@ -1,5 +1,6 @@
 //! Writes a scene's triangles and two sets of its rays, and times this
-//! project's wide BVH on them, one ray at a time, for
+//! project's wide BVH on them, one ray at a time
+//! ([`throughput::measure`], as `part2-bvh --bench` does), for
 //! `benches/compare/packets.sh` (Embree's packets on the same rays).
 //!
 //! ```text
@@ -11,8 +12,9 @@
 //! - `camera.bin`: `SAMPLES` camera rays a pixel (default 480 x 360, 16),
 //!   pixel after pixel, a pixel's rays one after another, as a renderer
 //!   that traces a pixel's samples together would hand them over;
-//! - `bounce.bin`: from each camera ray's hit, a cosine-distributed
-//!   direction about the geometric normal on the ray's side, in the same
+//! - `bounce.bin`: from each camera ray's hit, a direction uniform on the
+//!   hemisphere of the geometric normal on the ray's side
+//!   ([`throughput::diffuse_rays`], the bench's diffuse set), in the same
 //!   order, cut to a multiple of 16 (made-up rays: on glass a render
 //!   would refract, and its rays inside glass always hit);
 //! - `triangles.bin`: every triangle's three corners.
@@ -25,13 +27,11 @@ use std::error::Error;
 use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::path::Path;
-use std::time::Instant;
 
 use glam::Vec2;
+use pathtracer::bvh::throughput::{self, Query, RaySet};
 use pathtracer::bvh::wide::WideBvhAccel;
 use pathtracer::intersect::{Intersector, Primitives, Ray, Shape};
-use pathtracer::math::warp::sample_cosine_hemisphere;
-use pathtracer::math::Frame;
 use pathtracer::raygen::Camera;
 use rand::{Rng, SeedableRng};
 
@@ -51,24 +51,6 @@ fn ray_floats(rays: &[Ray]) -> impl Iterator<Item = f32> + '_ {
             r.origin.x, r.origin.y, r.origin.z, r.dir.x, r.dir.y, r.dir.z, r.t_min, r.t_max,
         ]
     })
-}
-
-/// Rays a second through `accel`, one at a time (median of five passes),
-/// how many hit and the sum of their hit distances.
-fn rate(accel: &WideBvhAccel, rays: &[Ray]) -> (f64, usize, f64) {
-    let mut rates = Vec::new();
-    let (mut hits, mut distances) = (0, 0.0);
-    for _ in 0..5 {
-        let start = Instant::now();
-        (hits, distances) = (0, 0.0);
-        for hit in rays.iter().filter_map(|r| accel.nearest(r)) {
-            hits += 1;
-            distances += f64::from(hit.hit.t);
-        }
-        rates.push(rays.len() as f64 / start.elapsed().as_secs_f64());
-    }
-    rates.sort_by(f64::total_cmp);
-    (rates[2], hits, distances)
 }
 
 fn main() -> Result<(), Box<dyn Error>> {
@@ -102,7 +84,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     )?;
     let accel = WideBvhAccel::new(primitives);
     let mut rng = rand::rngs::StdRng::seed_from_u64(7);
-    let (mut camera_rays, mut bounce_rays) = (Vec::new(), Vec::new());
+    let mut camera_rays = Vec::new();
     for y in 0..height {
         for x in 0..width {
             for _ in 0..samples {
@@ -110,28 +92,35 @@ fn main() -> Result<(), Box<dyn Error>> {
                 let ray =
                     pathtracer::render::pixel_ray(&camera, size, (x, y), offset, Vec2::splat(0.5));
                 camera_rays.push(ray);
-                if let Some(hit) = accel.intersect(&ray) {
-                    let normal = if hit.ng.dot(ray.dir) < 0.0 {
-                        hit.ng
-                    } else {
-                        -hit.ng
-                    };
-                    let u = Vec2::new(rng.gen(), rng.gen());
-                    let dir = Frame::from_z(normal).to_world(sample_cosine_hemisphere(u));
-                    bounce_rays.push(hit.spawn_ray(dir));
-                }
             }
         }
     }
+    let hitting: Vec<Ray> = camera_rays
+        .iter()
+        .filter(|ray| accel.nearest(ray).is_some())
+        .copied()
+        .collect();
+    let mut bounce_rays = throughput::diffuse_rays(&accel, &hitting);
     bounce_rays.truncate(bounce_rays.len() / 16 * 16);
-    write_floats(&out.join("camera.bin"), ray_floats(&camera_rays))?;
-    write_floats(&out.join("bounce.bin"), ray_floats(&bounce_rays))?;
-    for (name, rays) in [("camera", &camera_rays), ("bounce", &bounce_rays)] {
-        let (rays_per_second, hits, distances) = rate(&accel, rays);
+    let sets = [
+        RaySet {
+            name: "camera",
+            rays: camera_rays,
+        },
+        RaySet {
+            name: "bounce",
+            rays: bounce_rays,
+        },
+    ];
+    for set in &sets {
+        write_floats(
+            &out.join(format!("{}.bin", set.name)),
+            ray_floats(&set.rays),
+        )?;
+        let measured = throughput::measure(&accel, set, Query::Nearest, 1);
         println!(
-            "this project {name}: {} rays, {hits} hits, sum of t {distances:.1}, {:.2} Mrays/s (one at a time, median of 5)",
-            rays.len(),
-            rays_per_second / 1e6
+            "this project, {} rays, one a query: {measured}",
+            set.rays.len()
         );
     }
     Ok(())

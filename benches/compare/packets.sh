@@ -5,13 +5,13 @@
 #   benches/compare/packets.sh SCENE.dae [MITSUBA_PYTHON]
 #
 # The rays come from `examples/render_rays.rs` (camera rays, 16 a pixel,
-# and a cosine bounce from each hit). Embree is the build inside the
+# and a uniform hemisphere bounce from each hit). Embree is the build inside the
 # Mitsuba 3 wheel of MITSUBA_PYTHON (default /tmp/mv/bin/python:
 # `python3 -m venv /tmp/mv && /tmp/mv/bin/pip install mitsuba numpy`),
 # the one Mitsuba traces with (its scene set up as Mitsuba sets its own:
 # default flags, high build quality); its headers are in the wheel, and
 # g++ builds `embree_packets.cpp` against it. The bounce rays are made
-# up (a cosine bounce about each camera hit's geometric normal, glass
+# up (a uniform bounce about each camera hit's geometric normal, glass
 # included), not a render's own. For development only.
 set -euo pipefail
 scene=$(realpath "${1:?usage: packets.sh SCENE.dae [MITSUBA_PYTHON]}")
