@@ -261,13 +261,18 @@ def median_3x3(image):
     return np.median(np.stack(shifted), axis=0)
 
 
-def variance(images, mask=None):
-    """Per-render variance from independent renders of one image: each pixel's
-    sample variance over them (for two, (a - b)^2 / 2), averaged over the
-    channels and the pixels of `mask` if given."""
+def pixel_variances(images):
+    """Each pixel's sample variance over independent renders of one image
+    (for two, (a - b)^2 / 2), averaged over the channels."""
     import numpy as np
 
-    per_pixel = np.stack(images).var(0, ddof=1).mean(-1)
+    return np.stack(images).var(0, ddof=1).mean(-1)
+
+
+def variance(images, mask=None):
+    """Per-render variance: `pixel_variances` averaged over the pixels of
+    `mask` if given, else over all."""
+    per_pixel = pixel_variances(images)
     return float(per_pixel.mean() if mask is None else per_pixel[mask].mean())
 
 
@@ -284,7 +289,7 @@ def spikes(images, spp, threshold):
     excess = (lum - np.median(lum, 0)) * spp
     over = excess > threshold
     pixels = over.any(0)
-    per_pixel = np.stack(images).var(0, ddof=1).mean(-1)
+    per_pixel = pixel_variances(images)
     return int(over.sum()), pixels, float(per_pixel[pixels].sum() / per_pixel.sum())
 
 
