@@ -239,6 +239,7 @@ fn rows() -> Vec<Row> {
                     max_depth: 1,
                     accumulate: true,
                     roulette: Roulette::Off,
+                    glass_splits: 0,
                 },
             },
         },

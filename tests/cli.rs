@@ -198,34 +198,55 @@ fn info_needs_no_writable_output() {
 }
 
 #[test]
-fn info_names_the_sampler_and_the_roulette() {
+fn info_names_the_sampler_the_roulette_and_the_glass_splits() {
+    let materials = env!("CARGO_BIN_EXE_part6-materials");
     let plan = |flags: &[&str]| {
         let mut args = vec!["--info"];
         args.extend(flags);
-        let (ok, stdout, _) = run(PATHTRACER, &args);
+        let (ok, stdout, _) = run(materials, &args);
         assert!(ok, "{stdout}");
         let line = |what: &str| {
+            let prefix = format!("plan: {what}: ");
             stdout
                 .lines()
-                .find(|l| l.starts_with(&format!("plan: {what}: ")))
+                .find_map(|l| l.strip_prefix(&prefix))
                 .unwrap_or_else(|| panic!("no plan: {what} line in {stdout}"))
                 .split(' ')
-                .nth(2)
+                .next()
                 .unwrap()
                 .to_string()
         };
-        (line("sampler"), line("roulette"))
+        (line("sampler"), line("roulette"), line("glass splits"))
     };
-    assert_eq!(plan(&[]), ("zsobol".into(), "throughput".into()));
-    assert_eq!(plan(&["--course"]), ("independent".into(), "fixed".into()));
+    let triple = |a: &str, b: &str, c: &str| (a.to_string(), b.to_string(), c.to_string());
+    // The built-in materials box has a glass sphere; the default scene none.
+    assert_eq!(plan(&[]), triple("zsobol", "throughput", "2"));
+    let (ok, stdout, _) = run(PATHTRACER, &["--info"]);
+    assert!(
+        ok && stdout.contains("plan: glass splits: none (no glass)"),
+        "{stdout}"
+    );
+    assert_eq!(plan(&["--course"]), triple("independent", "fixed", "none"));
     assert_eq!(
         plan(&["--sampler", "independent"]),
-        ("independent".into(), "throughput".into())
+        triple("independent", "throughput", "2")
     );
     assert_eq!(
-        plan(&["--roulette", "fixed"]),
-        ("zsobol".into(), "fixed".into())
+        plan(&["--roulette", "fixed", "--glass-splits", "3"]),
+        triple("zsobol", "fixed", "3")
     );
+    for refused in [
+        &["--course", "--glass-splits", "1"][..],
+        &["--glass-splits", "9"],
+    ] {
+        let mut args = vec!["--info"];
+        args.extend(refused);
+        let (ok, _, stderr) = run(materials, &args);
+        assert!(
+            !ok && stderr.contains("--glass-splits"),
+            "{refused:?}: {stderr}"
+        );
+    }
 }
 
 /// `--course-exact` names its assignment and its adaptive sampling: 3-2

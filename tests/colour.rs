@@ -233,6 +233,7 @@ fn coloured_furnace_sums_each_channel_s_bounces() {
             max_depth,
             accumulate: true,
             roulette,
+            glass_splits: 0,
         };
         let expected = sum((max_depth < 200).then_some(max_depth as i32));
         let est = estimate_rgb(&world, &tracer, &ray, n, 70 + k as u64);

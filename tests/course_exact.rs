@@ -90,6 +90,7 @@ fn the_starters_functions_agree_with_the_project_given_the_courses_choices() {
             max_depth,
             accumulate,
             roulette: Roulette::Fixed,
+            glass_splits: 0,
         };
         let theirs = starter(
             StarterDirect::Importance,
@@ -170,6 +171,7 @@ fn the_courses_hemisphere_estimator_sees_the_lamp_mesh() {
         max_depth: 1,
         accumulate: true,
         roulette: Roulette::Off,
+        glass_splits: 0,
     };
     let project = channels(200_000, 8, |rng| ours.radiance(&world, &ray, rng));
     assert_mean_matches("-H, the project's", project[1], rect, ALPHA / 3.0, 0.0);

@@ -101,6 +101,7 @@ fn with_roulette(direct: DirectStrategy, roulette: Roulette) -> PathTracer {
         max_depth: 200,
         accumulate: true,
         roulette,
+        glass_splits: 0,
     }
 }
 
@@ -146,6 +147,7 @@ fn furnace_without_russian_roulette_sums_m_bounces() {
                 max_depth,
                 accumulate: true,
                 roulette: Roulette::Off,
+                glass_splits: 0,
             };
             let label = format!("{name}, a = {albedo}, m = {max_depth}");
             let est = estimate(&scene, &tracer, 4000, 7);
@@ -188,6 +190,7 @@ fn only_the_m_th_bounce_with_o_0() {
             max_depth,
             accumulate: false,
             roulette: Roulette::Off,
+            glass_splits: 0,
         };
         let est = estimate(&scene, &tracer, 4000, 13);
         assert_mean_matches(name, est, expected, ALPHA / 3.0, 1e-4 * expected);

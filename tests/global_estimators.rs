@@ -120,6 +120,7 @@ fn furnace_integrating_sphere() {
             max_depth: m as u32,
             accumulate,
             roulette: if rr { Roulette::Fixed } else { Roulette::Off },
+            glass_splits: 0,
         };
         let est = estimate(&tracer_scene, &pt, &ray, n, 100 + k as u64);
         assert_mean_matches(

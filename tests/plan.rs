@@ -8,6 +8,7 @@ mod common;
 use common::*;
 use glam::Vec3;
 use pathtracer::depth_of_field::ThinLens;
+use pathtracer::global::GLASS_SPLITS;
 use pathtracer::lights::{LightConvention, LightSet};
 use pathtracer::plan::Plan;
 use pathtracer::scene::builtin::materials_box;
@@ -158,4 +159,42 @@ fn the_plan_names_the_caustic_casters() {
         "{line}"
     );
     assert!(casters_line(&point_lit()).contains("none"));
+}
+
+/// Glass splits where the scene has glass: the materials box's glass
+/// sphere gets [`GLASS_SPLITS`], which `specialise` puts in the tracer;
+/// the point-lit scene, without glass, none; and a flag's number
+/// replaces the plan's, line included.
+#[test]
+fn the_plan_splits_glass_where_the_scene_has_it() {
+    let line = |plan: &Plan| {
+        plan.lines
+            .iter()
+            .find(|l| l.starts_with("plan: glass splits: "))
+            .expect("a glass splits line")
+            .clone()
+    };
+    let glass = plan_of(&materials_box(), 5);
+    assert!(glass.bsdfs.glass && glass.glass_splits == GLASS_SPLITS);
+    let general = tracer(LIGHTS, 5, true);
+    assert_eq!(general.glass_splits, 0);
+    assert_eq!(glass.specialise(&general).glass_splits, GLASS_SPLITS);
+    assert!(line(&glass).contains(&format!("glass splits: {GLASS_SPLITS} (the plan's)")));
+
+    let plain = plan_of(&point_lit(), 5);
+    assert!(!plain.bsdfs.glass && plain.glass_splits == 0);
+    assert!(
+        line(&plain).ends_with("none (no glass)"),
+        "{}",
+        line(&plain)
+    );
+
+    let coin = plan_of(&materials_box(), 5).with_glass_splits(Some(0));
+    assert_eq!(coin.specialise(&general).glass_splits, 0);
+    assert!(line(&coin).contains("none (asked)"), "{}", line(&coin));
+    let four = plan_of(&materials_box(), 5).with_glass_splits(Some(4));
+    assert_eq!(four.specialise(&general).glass_splits, 4);
+    assert!(line(&four).contains("4 (asked)"), "{}", line(&four));
+    let unasked = plan_of(&materials_box(), 5).with_glass_splits(None);
+    assert_eq!(unasked.glass_splits, GLASS_SPLITS);
 }

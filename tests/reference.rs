@@ -152,6 +152,7 @@ fn cbbunny_framing_and_brightness_against_the_course_render() {
         max_depth: 5,
         accumulate: true,
         roulette: Roulette::Fixed,
+        glass_splits: 0,
     };
     let project = render_lighting(&physical, &tracer, camera, &settings, None);
     // The course's image (--course-exact=3-1).

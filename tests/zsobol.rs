@@ -230,6 +230,7 @@ impl CornellRenders {
             max_depth,
             accumulate: true,
             roulette: Roulette::Throughput,
+            glass_splits: 0,
         };
         let settings = RenderSettings {
             width: Self::SIZE.0,

@@ -31,6 +31,7 @@ fn tracer(roulette: Roulette) -> PathTracer {
         max_depth: 8,
         accumulate: true,
         roulette,
+        glass_splits: 0,
     }
 }
 

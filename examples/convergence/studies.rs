@@ -57,6 +57,7 @@ fn lights(samples_per_light: u32, max_depth: u32, russian_roulette: bool) -> Pat
         } else {
             Roulette::Off
         },
+        glass_splits: 0,
     }
 }
 
@@ -68,6 +69,7 @@ fn hemisphere(directions: u32) -> PathTracer {
         max_depth: 1,
         accumulate: true,
         roulette: Roulette::Off,
+        glass_splits: 0,
     }
 }
 

@@ -129,6 +129,7 @@ pub fn paths(l: u32, m: u32, accumulate: bool) -> PathTracer {
         max_depth: m,
         accumulate,
         roulette: Roulette::Fixed,
+        glass_splits: 0,
     }
 }
 
@@ -140,5 +141,6 @@ pub fn direct(strategy: DirectStrategy) -> PathTracer {
         max_depth: 1,
         accumulate: true,
         roulette: Roulette::Off,
+        glass_splits: 0,
     }
 }

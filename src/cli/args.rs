@@ -11,6 +11,7 @@ use std::path::PathBuf;
 use clap::{ArgAction, Parser};
 
 use crate::depth_of_field::COURSE_FOCAL_DISTANCE;
+use crate::global::MAX_GLASS_SPLITS;
 
 use super::values::{non_negative, positive, whole, AdaptiveValues, Number};
 pub use super::values::{
@@ -221,9 +222,18 @@ pub struct CourseArgs {
     #[arg(long, value_enum, value_name = "RULE", default_value_t = CastersArg::Auto)]
     pub casters: CastersArg,
 
+    /// Glass splits: at the first N glass vertices of the camera's chain
+    /// of mirror and glass bounces, follow both reflection and refraction
+    /// instead of choosing one by a coin, weighted so the image's
+    /// expectation is unchanged (0: the course's coin everywhere; at
+    /// most 8). Without
+    /// it the render plan chooses (2 where the scene has glass).
+    #[arg(long, value_name = "N", value_parser = Number(whole(0u32, MAX_GLASS_SPLITS)))]
+    pub glass_splits: Option<u32>,
+
     /// The course's sampling: `--sampler independent --roulette fixed
-    /// --casters off`.
-    #[arg(long, conflicts_with_all = ["sampler", "roulette", "casters"])]
+    /// --casters off --glass-splits 0`.
+    #[arg(long, conflicts_with_all = ["sampler", "roulette", "casters", "glass_splits"])]
     pub course: bool,
 
     /// The image a correct course solution renders, starter code and
@@ -234,7 +244,7 @@ pub struct CourseArgs {
     /// it, 3-1 for parts 1 to 5 and 3-2 for parts 6 to 8 and `pathtracer`.
     #[arg(long, value_enum, value_name = "ASSIGNMENT", num_args = 0..=1,
           require_equals = true,
-          conflicts_with_all = ["course", "sampler", "roulette", "casters", "bsdf_only",
+          conflicts_with_all = ["course", "sampler", "roulette", "casters", "glass_splits", "bsdf_only",
                                 "no_mis", "course_lights", "schlick", "microfacet_sampling",
                                 "light_choice", "no_plan"])]
     pub course_exact: Option<Option<AssignmentArg>>,
@@ -243,7 +253,7 @@ pub struct CourseArgs {
     /// looks like (repeatable; implies --course-exact); `--mistake list`
     /// prints the catalogue (docs/13-symptoms.md).
     #[arg(long = "mistake", value_name = "NAME",
-          conflicts_with_all = ["course", "sampler", "roulette", "casters", "bsdf_only",
+          conflicts_with_all = ["course", "sampler", "roulette", "casters", "glass_splits", "bsdf_only",
                                 "no_mis", "course_lights", "schlick", "microfacet_sampling",
                                 "light_choice", "no_plan"])]
     pub mistakes: Vec<String>,

@@ -186,6 +186,16 @@ impl CourseArgs {
         }
     }
 
+    /// The glass splits the flags ask for: `--glass-splits`, 0 with
+    /// `--course`, or `None` for the render plan's.
+    pub fn glass_splits(&self) -> Option<u32> {
+        if self.course {
+            Some(0)
+        } else {
+            self.glass_splits
+        }
+    }
+
     /// The render settings these flags ask for (progress bar on).
     pub fn render_settings(&self) -> RenderSettings {
         RenderSettings {

@@ -33,11 +33,25 @@
 //! follows the path's throughput after [`THROUGHPUT_ROULETTE_AFTER`]
 //! bounces ([`Roulette::Throughput`], the default).
 //!
+//! Glass splits. At a glass vertex the path chooses reflection with
+//! probability `F` and refraction with `1 - F`, the course's coin. Along
+//! the camera's chain of delta bounces (every vertex so far a mirror or
+//! glass), at its first [`PathTracer::glass_splits`] glass vertices, it
+//! follows both instead: the reflection as a path of its own with
+//! throughput `beta R F`, the refraction on with `beta T (1 - F) / eta^2`.
+//! The sum of the two is the coin's expectation, so the image's does not
+//! change; what goes is the coin's variance, which is large where the
+//! lobe the coin rarely takes sees something bright: the sun in a glint,
+//! or through the glass after a reflection inside it. Each split costs a
+//! path, so the number is small (two: up to four branches).
+//!
 //! Random numbers come from a [`Sampler`], in a fixed order per vertex:
 //! the direct-light estimate's, the BSDF's 1D lobe choice and 2D
 //! direction, then the roulette's 1D number (drawn whenever roulette
 //! applies at the vertex, so that a sample's dimensions line up with its
-//! pixel's other samples whatever `q` is).
+//! pixel's other samples whatever `q` is). A split vertex draws no lobe
+//! choice nor direction, and its reflected branch draws its numbers
+//! before the refraction goes on.
 
 pub mod emission;
 pub mod roulette;
@@ -47,7 +61,7 @@ pub use roulette::{PathWeight, Roulette, CONTINUE_PROBABILITY, THROUGHPUT_ROULET
 
 use crate::direct::{DirectHemisphere, DirectLights};
 use crate::intersect::{Hit, Intersector, Ray};
-use crate::materials::Bsdf;
+use crate::materials::{Bsdf, BsdfSample};
 use crate::math::Rgb;
 use crate::sampling::Sampler;
 use crate::world::{ShadingPoint, World};
@@ -90,7 +104,19 @@ pub struct PathTracer {
     pub accumulate: bool,
     /// Russian roulette and its rule (where it starts depends on the rule).
     pub roulette: Roulette,
+    /// Glass vertices, along the camera's chain of delta bounces, at which
+    /// the path follows both lobes instead of choosing one (`--glass-splits`,
+    /// [`GLASS_SPLITS`] where the render plan asks; 0 is the course's coin).
+    pub glass_splits: u32,
 }
+
+/// The glass splits the render plan asks for where glass is seen
+/// ([`PathTracer::glass_splits`]): up to four branches a camera ray.
+pub const GLASS_SPLITS: u32 = 2;
+
+/// The most glass splits a path makes (`--glass-splits` up to this): up
+/// to `2^8` branches a camera ray.
+pub const MAX_GLASS_SPLITS: u32 = 8;
 
 impl PathTracer {
     /// Whether light with `bounces` bounces is part of the image.
@@ -111,13 +137,43 @@ impl PathTracer {
         camera_ray: &Ray,
         sampler: &mut impl Sampler,
     ) -> Rgb {
+        let mut branches = Branches::new();
+        let mut state = PathState {
+            ray: *camera_ray,
+            path: PathWeight::START,
+            prev: PrevVertex::CameraOrDelta,
+            bounces: 0,
+            splits: self.glass_splits.min(MAX_GLASS_SPLITS),
+        };
         let mut l = Rgb::ZERO;
-        // The throughput and the refractions' scale, roulette's inputs.
-        let mut path = PathWeight::START;
-        let mut ray = *camera_ray;
-        let mut prev = PrevVertex::CameraOrDelta;
-        // Vertices so far: the light the next ray finds has this many bounces.
-        let mut bounces = 0;
+        loop {
+            l += self.trace(world, state, &mut branches, sampler);
+            match branches.pop() {
+                Some(branch) => state = branch,
+                None => return l,
+            }
+        }
+    }
+
+    /// The light a path in `state` gathers from its next ray on; the
+    /// reflected branches of the glass vertices it splits wait in
+    /// `branches`. NaN for a rejected sample.
+    #[inline(always)]
+    fn trace<I: Intersector>(
+        &self,
+        world: &World<I>,
+        state: PathState,
+        branches: &mut Branches,
+        sampler: &mut impl Sampler,
+    ) -> Rgb {
+        let PathState {
+            mut ray,
+            mut path,
+            mut prev,
+            mut bounces,
+            mut splits,
+        } = state;
+        let mut l = Rgb::ZERO;
         loop {
             let next = world.intersector.intersect(&ray);
             if self.counts(bounces) {
@@ -153,57 +209,109 @@ impl PathTracer {
             if last && (lights_alone || !self.last_ray_can_count(world, point.bsdf.is_delta())) {
                 return l;
             }
-            let uc = sampler.get_1d();
-            let u = sampler.get_2d();
-            let Some(sample) = world.sample_continuation(&point, uc, u) else {
-                return l;
-            };
-            let onward = path.scattered(sample.weight(), sample.transmission.then_some(sample.eta));
-            // Russian roulette, where its rule applies, never on the last
-            // ray, which only looks for emission.
-            let q = if self.roulette.applies_at(bounces) && !last {
-                let q = self
-                    .roulette
-                    .continue_probability(onward.beta, onward.eta_scale);
-                if sampler.get_1d() >= q {
-                    return l;
+            let sample = match point.bsdf {
+                // Both lobes, on the camera's chain of delta bounces: the
+                // reflection as a path of its own, the refraction here.
+                Bsdf::Glass(glass) if splits > 0 && glass.reflects_and_refracts(point.wo) => {
+                    splits -= 1;
+                    let [reflected, refracted] = glass.both_lobes(point.wo);
+                    match self.step(world, &point, path, bounces, last, reflected, sampler) {
+                        Step::On(branch) => branches.push(PathState { splits, ..branch }),
+                        Step::Invalid => return Rgb::splat(f32::NAN),
+                        Step::End => {}
+                    }
+                    refracted
                 }
-                q
-            } else {
-                1.0
-            };
-            path = onward.survived(q);
-            if !path.beta.is_finite() {
-                // Counted by the render as a rejected sample, not hidden.
-                return Rgb::splat(f32::NAN);
-            }
-            if path.beta == Rgb::ZERO {
-                return l;
-            }
-            prev = if sample.is_delta() {
-                PrevVertex::CameraOrDelta
-            } else {
-                PrevVertex::Scattering {
-                    p: point.hit.p,
-                    bsdf_pdf: sample.pdf(),
-                    splits_map: world.splits_map(&point.bsdf),
+                _ => {
+                    if !point.bsdf.is_delta() {
+                        splits = 0;
+                    }
+                    let uc = sampler.get_1d();
+                    let u = sampler.get_2d();
+                    let Some(sample) = world.sample_continuation(&point, uc, u) else {
+                        return l;
+                    };
+                    sample
                 }
             };
-            ray = point.hit.spawn_ray(point.frame.to_world(sample.wi));
-            // What the ray reads of the environment if it escapes loads
-            // while it is traced (a miss overlapped, not waited for), where
-            // the light it finds counts; not for a ray refracted into a
-            // denser medium (into glass from the air), which meets a
-            // closed object's far side first (the hint as a whole was
-            // 2.6 % of the glass bunny's time under a sun; skipping it
-            // here saved 1.5 %). Only speed depends on this.
-            let enters_denser = sample.transmission && sample.eta > 1.0;
-            if self.counts(bounces) && !enters_denser {
-                for (_, light) in world.lights.infinite() {
-                    light.prefetch_escape(ray.dir);
+            match self.step(world, &point, path, bounces, last, sample, sampler) {
+                Step::On(onward) => {
+                    ray = onward.ray;
+                    path = onward.path;
+                    prev = onward.prev;
                 }
+                Step::Invalid => return Rgb::splat(f32::NAN),
+                Step::End => return l,
             }
         }
+    }
+
+    /// The path past `point` along `sample`: roulette where its rule
+    /// applies, the new throughput and the ray that leaves.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn step<I: Intersector>(
+        &self,
+        world: &World<I>,
+        point: &ShadingPoint,
+        path: PathWeight,
+        bounces: u32,
+        last: bool,
+        sample: BsdfSample,
+        sampler: &mut impl Sampler,
+    ) -> Step {
+        let onward = path.scattered(sample.weight(), sample.transmission.then_some(sample.eta));
+        // Russian roulette, where its rule applies, never on the last
+        // ray, which only looks for emission.
+        let q = if self.roulette.applies_at(bounces) && !last {
+            let q = self
+                .roulette
+                .continue_probability(onward.beta, onward.eta_scale);
+            if sampler.get_1d() >= q {
+                return Step::End;
+            }
+            q
+        } else {
+            1.0
+        };
+        let path = onward.survived(q);
+        if !path.beta.is_finite() {
+            // Counted by the render as a rejected sample, not hidden.
+            return Step::Invalid;
+        }
+        if path.beta == Rgb::ZERO {
+            return Step::End;
+        }
+        let prev = if sample.is_delta() {
+            PrevVertex::CameraOrDelta
+        } else {
+            PrevVertex::Scattering {
+                p: point.hit.p,
+                bsdf_pdf: sample.pdf(),
+                splits_map: world.splits_map(&point.bsdf),
+            }
+        };
+        let ray = point.hit.spawn_ray(point.frame.to_world(sample.wi));
+        // What the ray reads of the environment if it escapes loads
+        // while it is traced (a miss overlapped, not waited for), where
+        // the light it finds counts; not for a ray refracted into a
+        // denser medium (into glass from the air), which meets a
+        // closed object's far side first (the hint as a whole was
+        // 2.6 % of the glass bunny's time under a sun; skipping it
+        // here saved 1.5 %). Only speed depends on this.
+        let enters_denser = sample.transmission && sample.eta > 1.0;
+        if self.counts(bounces) && !enters_denser {
+            for (_, light) in world.lights.infinite() {
+                light.prefetch_escape(ray.dir);
+            }
+        }
+        Step::On(PathState {
+            ray,
+            path,
+            prev,
+            bounces,
+            splits: 0,
+        })
     }
 
     /// Direct light at `point`, by the chosen strategy.
@@ -275,4 +383,29 @@ impl PathTracer {
     ) -> Rgb {
         emission::found_emission(world, &self.direct, ray, next, prev)
     }
+}
+
+/// A path between vertices: the ray it follows and what it carries.
+#[derive(Clone, Copy, Debug)]
+struct PathState {
+    ray: Ray,
+    path: PathWeight,
+    prev: PrevVertex,
+    /// Vertices so far: the light the next ray finds has this many bounces.
+    bounces: u32,
+    /// Glass vertices left at which the path follows both lobes.
+    splits: u32,
+}
+
+/// Paths waiting to be traced: the reflected branches of split glass
+/// vertices, last in first out. Empty, it costs no allocation: paths
+/// that split no glass vertex never push one.
+type Branches = Vec<PathState>;
+
+/// What a path does past a vertex.
+enum Step {
+    On(PathState),
+    End,
+    /// A non-finite throughput: the sample is rejected.
+    Invalid,
 }

@@ -45,6 +45,38 @@ impl Glass {
         }
     }
 
+    /// Whether light from `wo` both reflects and refracts (not under
+    /// total internal reflection, nor from below).
+    pub fn reflects_and_refracts(&self, wo: Vec3) -> bool {
+        wo.z > 0.0 && refract(wo, self.eta).is_some()
+    }
+
+    /// Both lobes at once, each taken for sure (density 1), so that each
+    /// one's weight is its share: `R F` and `T (1 - F) / eta^2`. For `wo`
+    /// where [`Self::reflects_and_refracts`].
+    pub fn both_lobes(&self, wo: Vec3) -> [BsdfSample; 2] {
+        let f = self.fresnel(wo);
+        let reflected = reflect(wo);
+        let refracted = refract(wo, self.eta).unwrap_or(reflected);
+        [
+            BsdfSample {
+                f: self.reflectance * f / reflected.z,
+                wi: reflected,
+                density: Density::Delta(1.0),
+                transmission: false,
+                eta: 1.0,
+            },
+            BsdfSample {
+                f: self.transmittance * (1.0 - f) * self.eta_scaling.factor(self.eta)
+                    / refracted.z.abs(),
+                wi: refracted,
+                density: Density::Delta(1.0),
+                transmission: true,
+                eta: self.eta,
+            },
+        ]
+    }
+
     /// Reflection with probability `F`, else refraction, chosen by `uc`.
     pub fn sample(&self, wo: Vec3, uc: f32) -> Option<BsdfSample> {
         if wo.z <= 0.0 {
@@ -123,6 +155,54 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// Each lobe of `both_lobes` weighs what the coin's sample of it
+    /// weighs times the coin's probability of it, so that following both
+    /// is the coin's expectation; and the two go where the coin's go.
+    #[test]
+    fn both_lobes_are_the_coins_lobes_times_their_probabilities() {
+        for fresnel in [FresnelModel::Exact, FresnelModel::Schlick] {
+            for eta in [1.5f32, 1.0 / 1.5] {
+                for cos in [1.0f32, 0.7, 0.3, 0.05] {
+                    let wo = Vec3::new((1.0 - cos * cos).sqrt(), 0.0, cos);
+                    let g = Glass {
+                        reflectance: Rgb::new(0.9, 0.8, 0.7),
+                        transmittance: Rgb::new(0.6, 0.5, 0.4),
+                        ..glass(eta, fresnel)
+                    };
+                    if !g.reflects_and_refracts(wo) {
+                        assert!(eta < 1.0 && cos < 0.75, "{eta} {cos}");
+                        continue;
+                    }
+                    let f = g.fresnel(wo);
+                    let both = g.both_lobes(wo);
+                    let coin = [g.sample(wo, 0.0), g.sample(wo, 0.999_999)];
+                    for (lobe, coin) in both.iter().zip(coin) {
+                        let coin = coin.unwrap();
+                        assert_eq!(lobe.transmission, coin.transmission);
+                        assert!((lobe.wi - coin.wi).length() < 1e-6);
+                        assert!(lobe.is_delta() && lobe.pdf() == 1.0);
+                        let expected = coin.weight() * coin.pdf();
+                        assert!(
+                            (lobe.weight() - expected).abs().max_element() < 1e-5,
+                            "{eta} {cos}: {} against {expected}",
+                            lobe.weight()
+                        );
+                    }
+                    let reflected = both[0].weight();
+                    assert!((reflected - g.reflectance * f).abs().max_element() < 1e-5);
+                }
+            }
+        }
+        // Index 1: no reflection, all of the light goes straight on.
+        let wo = Vec3::new(0.6, 0.0, 0.8);
+        let [reflected, refracted] = glass(1.0, FresnelModel::Exact).both_lobes(wo);
+        assert_eq!(reflected.weight(), Rgb::ZERO);
+        assert!((refracted.weight() - Rgb::ONE).abs().max_element() < 1e-6);
+        let inside = glass(1.0 / 1.5, FresnelModel::Exact);
+        assert!(!inside.reflects_and_refracts(Vec3::new(0.9, 0.0, 0.19f32.sqrt())));
+        assert!(!inside.reflects_and_refracts(Vec3::new(0.0, 0.0, -1.0)));
     }
 
     #[test]

@@ -8,6 +8,7 @@
 //! | multiple importance sampling | a light BSDF rays can find (area, emissive triangles, sky) and a non-delta BSDF | the BSDF density per light sample and the last ray of every path |
 //! | lens | `-b > 0` | the lens sample and its disk warp per camera ray |
 //! | environment samples ([`light_samples`]) | an environment map lights the scene and `-l` is not given | nothing: four samples of the map instead of one at a vertex whose BSDF is no sharper than the map (and not diffuse in a scene that casts caustics), less noise per second |
+//! | glass splits | glass (that reflects and refracts) in the scene, and not `--course` | nothing: at the first [`GLASS_SPLITS`] glass vertices of the camera's chain of delta bounces the path follows both lobes instead of a coin's choice; more paths, less noise where the rare lobe sees a sun |
 //! | caustic casters | a mirror, glass or smooth conductor sphere, or a mirror-like mesh (and not `--casters off`) | nothing: it adds a sampling strategy where a scene has caustics, and costs nothing where it has none |
 //!
 //! Specialising changes no expectation: the plan only drops work whose
@@ -20,7 +21,9 @@ pub mod light_samples;
 
 use crate::depth_of_field::ThinLens;
 use crate::direct::DirectLights;
-use crate::global::{DirectStrategy, PathTracer, Roulette, THROUGHPUT_ROULETTE_AFTER};
+use crate::global::{
+    DirectStrategy, PathTracer, Roulette, GLASS_SPLITS, THROUGHPUT_ROULETTE_AFTER,
+};
 use crate::lights::LightSet;
 use crate::materials::{Bsdf, BsdfOptions};
 use crate::math::{luminance, Rgb};
@@ -40,6 +43,9 @@ pub struct BsdfKinds {
     pub mirror: bool,
     /// Glass or refraction.
     pub transmission: bool,
+    /// Glass that both reflects and refracts (not the refraction-only
+    /// material): its lobes are chosen by a coin ([`crate::materials::Glass`]).
+    pub glass: bool,
     /// A conductor near a mirror, mirror-like as the caustic casters
     /// count it ([`images::image_spread`]: `alpha` at most [`IMAGE_ALPHA`]).
     pub near_mirror: bool,
@@ -76,6 +82,7 @@ impl BsdfKinds {
                         material,
                         Material::Glass { .. } | Material::Refraction { .. }
                     );
+                    kinds.glass |= matches!(bsdf, Bsdf::Glass(_));
                 }
             }
         }
@@ -105,6 +112,9 @@ pub struct Plan {
     pub light_sampling: bool,
     pub mis: bool,
     pub lens: bool,
+    /// [`PathTracer::glass_splits`]: [`GLASS_SPLITS`] where the scene has
+    /// glass, else 0.
+    pub glass_splits: u32,
     /// One line per decision, `plan: ...`.
     pub lines: Vec<String>,
     /// Effects the flags hide, one line each.
@@ -193,6 +203,8 @@ impl Plan {
                 format!("plan: roulette: throughput (continue with probability min(1, max channel of the path's throughput) after {THROUGHPUT_ROULETTE_AFTER} bounces)")
             }
         });
+        let glass_splits = if bsdfs.glass { GLASS_SPLITS } else { 0 };
+        lines.push(glass_splits_line(glass_splits, bsdfs.glass, "the plan's"));
         let mut warnings = Vec::new();
         let m = tracer.max_depth;
         if bsdfs.mirror && m < 2 {
@@ -217,6 +229,7 @@ impl Plan {
             light_sampling,
             mis,
             lens: !lens.is_pinhole(),
+            glass_splits,
             lines,
             warnings,
         }
@@ -274,10 +287,29 @@ impl Plan {
         self
     }
 
+    /// The plan with the glass splits a flag asks for (`--glass-splits N`,
+    /// or 0 for `--course`), where one does.
+    pub fn with_glass_splits(mut self, asked: Option<u32>) -> Self {
+        if let Some(n) = asked {
+            self.glass_splits = n;
+            let line = glass_splits_line(n, self.bsdfs.glass, "asked");
+            if let Some(old) = self
+                .lines
+                .iter_mut()
+                .find(|l| l.starts_with(GLASS_SPLITS_LINE))
+            {
+                *old = line;
+            }
+        }
+        self
+    }
+
     /// `tracer` specialised to the plan: MIS off where no second strategy
-    /// could find the lights. The estimate's expectation does not change.
+    /// could find the lights, and the glass splits. The estimate's
+    /// expectation does not change.
     pub fn specialise(&self, tracer: &PathTracer) -> PathTracer {
         let mut t = *tracer;
+        t.glass_splits = self.glass_splits;
         if let DirectStrategy::Lights(d) = tracer.direct {
             t.direct = DirectStrategy::Lights(DirectLights {
                 mis: d.mis && self.mis,
@@ -285,6 +317,21 @@ impl Plan {
             });
         }
         t
+    }
+}
+
+const GLASS_SPLITS_LINE: &str = "plan: glass splits:";
+
+/// The plan's line for `n` glass splits, decided by `whose` rule.
+fn glass_splits_line(n: u32, glass: bool, whose: &str) -> String {
+    match (n, glass) {
+        (0, false) => format!("{GLASS_SPLITS_LINE} none (no glass)"),
+        (0, true) => format!(
+            "{GLASS_SPLITS_LINE} none ({whose}): a coin chooses reflection or refraction at every glass vertex (the course's)"
+        ),
+        (n, _) => format!(
+            "{GLASS_SPLITS_LINE} {n} ({whose}): at the first {n} glass vertices of the camera's chain of mirror and glass bounces, paths follow both reflection and refraction"
+        ),
     }
 }
 

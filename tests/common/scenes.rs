@@ -52,6 +52,7 @@ pub fn tracer_with(direct: DirectStrategy, max_depth: u32, roulette: Roulette) -
         max_depth,
         accumulate: true,
         roulette,
+        glass_splits: 0,
     }
 }
 

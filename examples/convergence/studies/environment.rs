@@ -29,6 +29,7 @@ pub fn environment(options: &Options) -> Result<()> {
         max_depth: 5,
         accumulate: true,
         roulette: Roulette::Fixed,
+        glass_splits: 0,
     };
     setup.environment = Some(importance.clone());
     let reference = setup.reference(&tracer(with(true)), 1024);

@@ -28,6 +28,7 @@ pub fn materials(options: &Options) -> Result<()> {
         max_depth: 5,
         accumulate: true,
         roulette: Roulette::Fixed,
+        glass_splits: 0,
     };
     let mis = with(DirectStrategy::Lights(DirectLights {
         samples_per_light: 1,

@@ -122,7 +122,8 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
         }
         let plan = Plan::new(&scene, &lights, &part.tracer, &camera.lens)
             .with_sampler(args.sampler_kind())
-            .with_casters(&Casters::new(&scene, &lights, args.world_options().casters));
+            .with_casters(&Casters::new(&scene, &lights, args.world_options().casters))
+            .with_glass_splits(args.glass_splits());
         for line in &plan.lines {
             crate::say!("{line}")?;
         }
@@ -141,7 +142,8 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
     let accel = build_wide_bvh(&scene.source, primitives)?;
     let world =
         World::with_options(&scene, &accel, args.world_options()).with_environment(environment);
-    let plan = Plan::new(&scene, &world.lights, &part.tracer, &camera.lens);
+    let plan = Plan::new(&scene, &world.lights, &part.tracer, &camera.lens)
+        .with_glass_splits(args.glass_splits());
     for warning in &plan.warnings {
         crate::say_err!("warning: {}: {warning}", scene.source);
     }
@@ -196,6 +198,7 @@ pub fn part3(args: &CourseArgs) -> Result<()> {
                 max_depth: 1,
                 accumulate: true,
                 roulette: Roulette::Off,
+                glass_splits: 0,
             },
             adaptive: None,
             rate_image: false,
@@ -210,6 +213,7 @@ fn path_tracer(args: &CourseArgs, scene: &Scene) -> PathTracer {
         max_depth: args.max_depth(),
         accumulate: args.accumulate == 1,
         roulette: args.roulette(),
+        glass_splits: args.glass_splits().unwrap_or(0),
     }
 }
 
