@@ -33,31 +33,29 @@
 //! follows the path's throughput after [`THROUGHPUT_ROULETTE_AFTER`]
 //! bounces ([`Roulette::Throughput`], the default).
 //!
-//! Glass splits. At a glass vertex the path chooses reflection with
-//! probability `F` and refraction with `1 - F`, the course's coin. Along
-//! the camera's chain of delta bounces (every vertex so far a mirror or
-//! glass), at its first [`PathTracer::glass_splits`] glass vertices, it
-//! follows both instead: the reflection as a path of its own with
-//! throughput `beta R F`, the refraction on with `beta T (1 - F) / eta^2`.
-//! The sum of the two is the coin's expectation, so the image's does not
-//! change; what goes is the coin's variance, which is large where the
-//! lobe the coin rarely takes sees something bright: the sun in a glint,
-//! or through the glass after a reflection inside it. Each split costs a
-//! path, so the number is small (two: up to four branches).
+//! At the first glass vertices of the camera's chain of delta bounces
+//! the path follows both lobes instead of a coin's choice ([`splits`]).
 //!
 //! Random numbers come from a [`Sampler`], in a fixed order per vertex:
 //! the direct-light estimate's, the BSDF's 1D lobe choice and 2D
 //! direction, then the roulette's 1D number (drawn whenever roulette
 //! applies at the vertex, so that a sample's dimensions line up with its
 //! pixel's other samples whatever `q` is). A split vertex draws no lobe
-//! choice nor direction, and its reflected branch draws its numbers
-//! before the refraction goes on.
+//! choice nor direction; its reflected branch draws its roulette number
+//! there, and the rest of its numbers once the refracted path, and every
+//! branch pushed after it, has ended. So a branch's numbers do not line
+//! up with the pixel's other samples: their stratification is weaker
+//! there, their expectation the same.
 
 pub mod emission;
 pub mod roulette;
+pub mod splits;
 
 pub use emission::{emission_weight, Emitter, PrevVertex};
 pub use roulette::{PathWeight, Roulette, CONTINUE_PROBABILITY, THROUGHPUT_ROULETTE_AFTER};
+pub use splits::{GLASS_SPLITS, MAX_GLASS_SPLITS};
+
+use splits::{Branches, PathState, Step};
 
 use crate::direct::{DirectHemisphere, DirectLights};
 use crate::intersect::{Hit, Intersector, Ray};
@@ -110,14 +108,6 @@ pub struct PathTracer {
     pub glass_splits: u32,
 }
 
-/// The glass splits the render plan asks for where glass is seen
-/// ([`PathTracer::glass_splits`]): up to four branches a camera ray.
-pub const GLASS_SPLITS: u32 = 2;
-
-/// The most glass splits a path makes (`--glass-splits` up to this): up
-/// to `2^8` branches a camera ray.
-pub const MAX_GLASS_SPLITS: u32 = 8;
-
 impl PathTracer {
     /// Whether light with `bounces` bounces is part of the image.
     fn counts(&self, bounces: u32) -> bool {
@@ -137,7 +127,7 @@ impl PathTracer {
         camera_ray: &Ray,
         sampler: &mut impl Sampler,
     ) -> Rgb {
-        let mut branches = Branches::new();
+        let mut branches = Branches::default();
         let mut state = PathState {
             ray: *camera_ray,
             path: PathWeight::START,
@@ -149,8 +139,8 @@ impl PathTracer {
         loop {
             l += self.trace(world, state, &mut branches, sampler);
             match branches.pop() {
-                Some(branch) => state = branch,
-                None => return l,
+                Some(branch) if !l.is_nan() => state = branch,
+                _ => return l,
             }
         }
     }
@@ -239,6 +229,21 @@ impl PathTracer {
                     ray = onward.ray;
                     path = onward.path;
                     prev = onward.prev;
+                    // What the ray reads of the environment if it escapes
+                    // loads while it is traced (a miss overlapped, not
+                    // waited for), where the light it finds counts; not
+                    // for a ray refracted into a denser medium (into glass
+                    // from the air), which meets a closed object's far
+                    // side first (the hint as a whole was 2.6 % of the
+                    // glass bunny's time under a sun; skipping it here
+                    // saved 1.5 %), nor for a branch, which waits. Only
+                    // speed depends on this.
+                    let enters_denser = sample.transmission && sample.eta > 1.0;
+                    if self.counts(bounces) && !enters_denser {
+                        for (_, light) in world.lights.infinite() {
+                            light.prefetch_escape(ray.dir);
+                        }
+                    }
                 }
                 Step::Invalid => return Rgb::splat(f32::NAN),
                 Step::End => return l,
@@ -292,19 +297,6 @@ impl PathTracer {
             }
         };
         let ray = point.hit.spawn_ray(point.frame.to_world(sample.wi));
-        // What the ray reads of the environment if it escapes loads
-        // while it is traced (a miss overlapped, not waited for), where
-        // the light it finds counts; not for a ray refracted into a
-        // denser medium (into glass from the air), which meets a
-        // closed object's far side first (the hint as a whole was
-        // 2.6 % of the glass bunny's time under a sun; skipping it
-        // here saved 1.5 %). Only speed depends on this.
-        let enters_denser = sample.transmission && sample.eta > 1.0;
-        if self.counts(bounces) && !enters_denser {
-            for (_, light) in world.lights.infinite() {
-                light.prefetch_escape(ray.dir);
-            }
-        }
         Step::On(PathState {
             ray,
             path,
@@ -383,29 +375,4 @@ impl PathTracer {
     ) -> Rgb {
         emission::found_emission(world, &self.direct, ray, next, prev)
     }
-}
-
-/// A path between vertices: the ray it follows and what it carries.
-#[derive(Clone, Copy, Debug)]
-struct PathState {
-    ray: Ray,
-    path: PathWeight,
-    prev: PrevVertex,
-    /// Vertices so far: the light the next ray finds has this many bounces.
-    bounces: u32,
-    /// Glass vertices left at which the path follows both lobes.
-    splits: u32,
-}
-
-/// Paths waiting to be traced: the reflected branches of split glass
-/// vertices, last in first out. Empty, it costs no allocation: paths
-/// that split no glass vertex never push one.
-type Branches = Vec<PathState>;
-
-/// What a path does past a vertex.
-enum Step {
-    On(PathState),
-    End,
-    /// A non-finite throughput: the sample is rejected.
-    Invalid,
 }

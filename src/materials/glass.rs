@@ -162,13 +162,17 @@ mod tests {
     /// is the coin's expectation; and the two go where the coin's go.
     #[test]
     fn both_lobes_are_the_coins_lobes_times_their_probabilities() {
-        for fresnel in [FresnelModel::Exact, FresnelModel::Schlick] {
+        let models = [FresnelModel::Exact, FresnelModel::Schlick]
+            .into_iter()
+            .flat_map(|f| [EtaScaling::Physical, EtaScaling::Starter].map(|e| (f, e)));
+        for (fresnel, eta_scaling) in models {
             for eta in [1.5f32, 1.0 / 1.5] {
                 for cos in [1.0f32, 0.7, 0.3, 0.05] {
                     let wo = Vec3::new((1.0 - cos * cos).sqrt(), 0.0, cos);
                     let g = Glass {
                         reflectance: Rgb::new(0.9, 0.8, 0.7),
                         transmittance: Rgb::new(0.6, 0.5, 0.4),
+                        eta_scaling,
                         ..glass(eta, fresnel)
                     };
                     if !g.reflects_and_refracts(wo) {

@@ -8,12 +8,14 @@
 //! | multiple importance sampling | a light BSDF rays can find (area, emissive triangles, sky) and a non-delta BSDF | the BSDF density per light sample and the last ray of every path |
 //! | lens | `-b > 0` | the lens sample and its disk warp per camera ray |
 //! | environment samples ([`light_samples`]) | an environment map lights the scene and `-l` is not given | nothing: four samples of the map instead of one at a vertex whose BSDF is no sharper than the map (and not diffuse in a scene that casts caustics), less noise per second |
-//! | glass splits | glass (that reflects and refracts) in the scene, and not `--course` | nothing: at the first [`GLASS_SPLITS`] glass vertices of the camera's chain of delta bounces the path follows both lobes instead of a coin's choice; more paths, less noise where the rare lobe sees a sun |
+//! | glass splits | glass (that reflects and refracts) in the scene, and not `--course` | nothing: it costs time, to lower the noise more: at the first [`GLASS_SPLITS`] glass vertices of the camera's chain of delta bounces the path follows both lobes instead of a coin's choice, more paths and less noise where the lobe the coin rarely takes sees a light |
 //! | caustic casters | a mirror, glass or smooth conductor sphere, or a mirror-like mesh (and not `--casters off`) | nothing: it adds a sampling strategy where a scene has caustics, and costs nothing where it has none |
 //!
 //! Specialising changes no expectation: the plan only drops work whose
-//! result is zero or whose weight is 1 (MIS with no second strategy), or
-//! splits a light's sample into several whose mean estimates the same. The
+//! result is zero or whose weight is 1 (MIS with no second strategy),
+//! splits a light's sample into several whose mean estimates the same,
+//! or follows both of glass's lobes, each weighted by the probability the
+//! coin would have given it. The
 //! plan also says when a flag hides an effect the scene has: a mirror shows
 //! lit surfaces only from `-m 2`, glass shows light through it from `-m 3`.
 

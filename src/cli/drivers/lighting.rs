@@ -198,7 +198,7 @@ pub fn part3(args: &CourseArgs) -> Result<()> {
                 max_depth: 1,
                 accumulate: true,
                 roulette: Roulette::Off,
-                glass_splits: 0,
+                glass_splits: args.glass_splits().unwrap_or(0),
             },
             adaptive: None,
             rate_image: false,
