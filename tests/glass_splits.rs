@@ -24,7 +24,7 @@ use pathtracer::environment::{EnvironmentLight, EnvironmentMap, EnvironmentSampl
 use pathtracer::global::{PathTracer, Roulette, MAX_GLASS_SPLITS};
 use pathtracer::math::Rgb;
 use pathtracer::sampling::IndependentSampler;
-use pathtracer::scene::Material;
+use pathtracer::scene::{Material, Scene};
 use pathtracer::world::World;
 
 const GLASS: Material = Material::Glass {
@@ -43,6 +43,17 @@ fn with_splits(tracer: PathTracer, glass_splits: u32) -> PathTracer {
         glass_splits,
         ..tracer
     }
+}
+
+/// The glass sphere on a diffuse floor, under a rectangle light.
+fn glass_on_a_floor() -> Scene {
+    let mut b = SceneBuilder::new();
+    let floor = b.material(diffuse(0.6));
+    let glass = b.material(GLASS);
+    b.floor(floor, 4.0)
+        .sphere(SPHERE_CENTER, SPHERE_RADIUS, glass)
+        .light(rect_light(10.0, LIGHT_AT, -Vec3::Y, 0.8, 0.6));
+    b.finish()
 }
 
 /// The point of the sphere where `eye` sees `light` reflected: where the
@@ -72,13 +83,7 @@ fn glint(eye: Vec3, light: Vec3) -> Vec3 {
 /// does dropping the branch.
 #[test]
 fn glass_splits_change_the_variance_not_the_mean() {
-    let mut b = SceneBuilder::new();
-    let floor = b.material(diffuse(0.6));
-    let glass = b.material(GLASS);
-    b.floor(floor, 4.0)
-        .sphere(SPHERE_CENTER, SPHERE_RADIUS, glass)
-        .light(rect_light(10.0, LIGHT_AT, -Vec3::Y, 0.8, 0.6));
-    let scene = b.finish();
+    let scene = glass_on_a_floor();
     let bvh = accel(&scene);
     let world = World::new(&scene, &bvh);
     let eye = Vec3::new(0.0, 1.2, 2.0);
@@ -191,13 +196,7 @@ fn splitting_every_vertex_under_a_uniform_sky_leaves_no_noise() {
 /// the radiances differ.
 #[test]
 fn a_path_that_scatters_first_is_not_split() {
-    let mut b = SceneBuilder::new();
-    let floor = b.material(diffuse(0.6));
-    let glass = b.material(GLASS);
-    b.floor(floor, 4.0)
-        .sphere(SPHERE_CENTER, SPHERE_RADIUS, glass)
-        .light(rect_light(10.0, LIGHT_AT, -Vec3::Y, 0.8, 0.6));
-    let scene = b.finish();
+    let scene = glass_on_a_floor();
     let bvh = accel(&scene);
     let world = World::new(&scene, &bvh);
     let coin = tracer(LIGHTS, 5, false);
