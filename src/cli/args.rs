@@ -226,8 +226,8 @@ pub struct CourseArgs {
     /// of mirror and glass bounces, follow both reflection and refraction
     /// instead of choosing one by a coin, weighted so the image's
     /// expectation is unchanged (0: the course's coin everywhere; at
-    /// most 8). Without
-    /// it the render plan chooses (2 where the scene has glass).
+    /// most 8). Without it the render plan chooses (2 where the scene has
+    /// glass).
     #[arg(long, value_name = "N", value_parser = Number(whole(0u32, MAX_GLASS_SPLITS)))]
     pub glass_splits: Option<u32>,
 

@@ -199,12 +199,15 @@ impl PathTracer {
             if last && (lights_alone || !self.last_ray_can_count(world, point.bsdf.is_delta())) {
                 return l;
             }
-            let sample = match point.bsdf {
+            let lobes = match point.bsdf {
+                Bsdf::Glass(glass) if splits > 0 => glass.both_lobes(point.wo),
+                _ => None,
+            };
+            let sample = match lobes {
                 // Both lobes, on the camera's chain of delta bounces: the
                 // reflection as a path of its own, the refraction here.
-                Bsdf::Glass(glass) if splits > 0 && glass.reflects_and_refracts(point.wo) => {
+                Some([reflected, refracted]) => {
                     splits -= 1;
-                    let [reflected, refracted] = glass.both_lobes(point.wo);
                     match self.step(world, &point, path, bounces, last, reflected, sampler) {
                         Step::On(branch) => branches.push(PathState { splits, ..branch }),
                         Step::Invalid => return Rgb::splat(f32::NAN),
@@ -212,7 +215,7 @@ impl PathTracer {
                     }
                     refracted
                 }
-                _ => {
+                None => {
                     if !point.bsdf.is_delta() {
                         splits = 0;
                     }

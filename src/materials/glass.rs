@@ -45,36 +45,20 @@ impl Glass {
         }
     }
 
-    /// Whether light from `wo` both reflects and refracts (not under
-    /// total internal reflection, nor from below).
-    pub fn reflects_and_refracts(&self, wo: Vec3) -> bool {
-        wo.z > 0.0 && refract(wo, self.eta).is_some()
-    }
-
     /// Both lobes at once, each taken for sure (density 1), so that each
-    /// one's weight is its share: `R F` and `T (1 - F) / eta^2`. For `wo`
-    /// where [`Self::reflects_and_refracts`].
-    pub fn both_lobes(&self, wo: Vec3) -> [BsdfSample; 2] {
+    /// one's weight is its share: `R F` and `T (1 - F) / eta^2`. `None`
+    /// where light from `wo` does not both reflect and refract: from
+    /// below, or under total internal reflection.
+    pub fn both_lobes(&self, wo: Vec3) -> Option<[BsdfSample; 2]> {
+        if wo.z <= 0.0 {
+            return None;
+        }
+        let refracted = refract(wo, self.eta)?;
         let f = self.fresnel(wo);
-        let reflected = reflect(wo);
-        let refracted = refract(wo, self.eta).unwrap_or(reflected);
-        [
-            BsdfSample {
-                f: self.reflectance * f / reflected.z,
-                wi: reflected,
-                density: Density::Delta(1.0),
-                transmission: false,
-                eta: 1.0,
-            },
-            BsdfSample {
-                f: self.transmittance * (1.0 - f) * self.eta_scaling.factor(self.eta)
-                    / refracted.z.abs(),
-                wi: refracted,
-                density: Density::Delta(1.0),
-                transmission: true,
-                eta: self.eta,
-            },
-        ]
+        Some([
+            self.reflection(wo, f, 1.0),
+            self.refraction(refracted, f, 1.0),
+        ])
     }
 
     /// Reflection with probability `F`, else refraction, chosen by `uc`.
@@ -83,25 +67,34 @@ impl Glass {
             return None;
         }
         let f = self.fresnel(wo);
-        let refracted = refract(wo, self.eta);
-        match refracted {
-            Some(wi) if uc >= f => Some(BsdfSample {
-                f: self.transmittance * (1.0 - f) * self.eta_scaling.factor(self.eta) / wi.z.abs(),
-                wi,
-                density: Density::Delta(1.0 - f),
-                transmission: true,
-                eta: self.eta,
-            }),
-            _ => {
-                let wi = reflect(wo);
-                Some(BsdfSample {
-                    f: self.reflectance * f / wi.z,
-                    wi,
-                    density: Density::Delta(f),
-                    transmission: false,
-                    eta: 1.0,
-                })
-            }
+        Some(match refract(wo, self.eta) {
+            Some(wi) if uc >= f => self.refraction(wi, f, 1.0 - f),
+            _ => self.reflection(wo, f, f),
+        })
+    }
+
+    /// The reflected lobe for `wo` and Fresnel reflectance `f`, taken with
+    /// probability `p`.
+    fn reflection(&self, wo: Vec3, f: f32, p: f32) -> BsdfSample {
+        let wi = reflect(wo);
+        BsdfSample {
+            f: self.reflectance * f / wi.z,
+            wi,
+            density: Density::Delta(p),
+            transmission: false,
+            eta: 1.0,
+        }
+    }
+
+    /// The refracted lobe along `wi` for Fresnel reflectance `f`, taken
+    /// with probability `p`.
+    fn refraction(&self, wi: Vec3, f: f32, p: f32) -> BsdfSample {
+        BsdfSample {
+            f: self.transmittance * (1.0 - f) * self.eta_scaling.factor(self.eta) / wi.z.abs(),
+            wi,
+            density: Density::Delta(p),
+            transmission: true,
+            eta: self.eta,
         }
     }
 }
@@ -175,12 +168,11 @@ mod tests {
                         eta_scaling,
                         ..glass(eta, fresnel)
                     };
-                    if !g.reflects_and_refracts(wo) {
+                    let Some(both) = g.both_lobes(wo) else {
                         assert!(eta < 1.0 && cos < 0.75, "{eta} {cos}");
                         continue;
-                    }
+                    };
                     let f = g.fresnel(wo);
-                    let both = g.both_lobes(wo);
                     let coin = [g.sample(wo, 0.0), g.sample(wo, 0.999_999)];
                     for (lobe, coin) in both.iter().zip(coin) {
                         let coin = coin.unwrap();
@@ -201,12 +193,14 @@ mod tests {
         }
         // Index 1: no reflection, all of the light goes straight on.
         let wo = Vec3::new(0.6, 0.0, 0.8);
-        let [reflected, refracted] = glass(1.0, FresnelModel::Exact).both_lobes(wo);
+        let [reflected, refracted] = glass(1.0, FresnelModel::Exact).both_lobes(wo).unwrap();
         assert_eq!(reflected.weight(), Rgb::ZERO);
         assert!((refracted.weight() - Rgb::ONE).abs().max_element() < 1e-6);
         let inside = glass(1.0 / 1.5, FresnelModel::Exact);
-        assert!(!inside.reflects_and_refracts(Vec3::new(0.9, 0.0, 0.19f32.sqrt())));
-        assert!(!inside.reflects_and_refracts(Vec3::new(0.0, 0.0, -1.0)));
+        assert!(inside
+            .both_lobes(Vec3::new(0.9, 0.0, 0.19f32.sqrt()))
+            .is_none());
+        assert!(inside.both_lobes(Vec3::new(0.0, 0.0, -1.0)).is_none());
     }
 
     #[test]
