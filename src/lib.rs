@@ -39,6 +39,7 @@ pub mod course;
 pub mod depth_of_field;
 pub mod direct;
 pub mod environment;
+pub mod glints;
 pub mod global;
 pub mod intersect;
 pub mod lights;

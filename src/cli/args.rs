@@ -15,7 +15,7 @@ use crate::global::MAX_GLASS_SPLITS;
 
 use super::values::{non_negative, positive, whole, AdaptiveValues, Number};
 pub use super::values::{
-    AccelArg, AssignmentArg, Builtin, CastersArg, LightChoiceArg, MicrofacetSamplingArg,
+    AccelArg, AssignmentArg, Builtin, CastersArg, GlintsArg, LightChoiceArg, MicrofacetSamplingArg,
     RouletteArg, SamplerArg,
 };
 
@@ -231,9 +231,18 @@ pub struct CourseArgs {
     #[arg(long, value_name = "N", value_parser = Number(whole(0u32, MAX_GLASS_SPLITS)))]
     pub glass_splits: Option<u32>,
 
+    /// Glint samples: the pixels whose chains of mirror and glass bounces
+    /// may see a small, bright part of the environment map (a sun) take
+    /// up to 16 times -s samples, as a pilot of rays before the render
+    /// decides, at most half again the render's samples (`auto`, the
+    /// default, where the scene has a map and mirror or glass), or every
+    /// pixel -s (`off`, the course's).
+    #[arg(long, value_enum, value_name = "RULE", default_value_t = GlintsArg::Auto)]
+    pub glints: GlintsArg,
+
     /// The course's sampling: `--sampler independent --roulette fixed
-    /// --casters off --glass-splits 0`.
-    #[arg(long, conflicts_with_all = ["sampler", "roulette", "casters", "glass_splits"])]
+    /// --casters off --glass-splits 0 --glints off`.
+    #[arg(long, conflicts_with_all = ["sampler", "roulette", "casters", "glass_splits", "glints"])]
     pub course: bool,
 
     /// The image a correct course solution renders, starter code and
@@ -244,7 +253,7 @@ pub struct CourseArgs {
     /// it, 3-1 for parts 1 to 5 and 3-2 for parts 6 to 8 and `pathtracer`.
     #[arg(long, value_enum, value_name = "ASSIGNMENT", num_args = 0..=1,
           require_equals = true,
-          conflicts_with_all = ["course", "sampler", "roulette", "casters", "glass_splits", "bsdf_only",
+          conflicts_with_all = ["course", "sampler", "roulette", "casters", "glass_splits", "glints", "bsdf_only",
                                 "no_mis", "course_lights", "schlick", "microfacet_sampling",
                                 "light_choice", "no_plan"])]
     pub course_exact: Option<Option<AssignmentArg>>,
@@ -253,7 +262,7 @@ pub struct CourseArgs {
     /// looks like (repeatable; implies --course-exact); `--mistake list`
     /// prints the catalogue (docs/13-symptoms.md).
     #[arg(long = "mistake", value_name = "NAME",
-          conflicts_with_all = ["course", "sampler", "roulette", "casters", "glass_splits", "bsdf_only",
+          conflicts_with_all = ["course", "sampler", "roulette", "casters", "glass_splits", "glints", "bsdf_only",
                                 "no_mis", "course_lights", "schlick", "microfacet_sampling",
                                 "light_choice", "no_plan"])]
     pub mistakes: Vec<String>,

@@ -196,6 +196,12 @@ impl CourseArgs {
         }
     }
 
+    /// Whether the flags allow glint samples ([`crate::glints`]): not with
+    /// `--glints off` or `--course`.
+    pub fn glints(&self) -> bool {
+        !self.course && self.glints == GlintsArg::Auto
+    }
+
     /// The render settings these flags ask for (progress bar on).
     pub fn render_settings(&self) -> RenderSettings {
         RenderSettings {

@@ -300,6 +300,17 @@ impl From<CastersArg> for CasterRule {
     }
 }
 
+/// `--glints`: whether the render plan may give more samples to the
+/// pixels that may see a glint ([`crate::glints`]).
+#[derive(clap::ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum GlintsArg {
+    /// Where the plan asks (an environment map, mirror or glass, a pinhole camera).
+    #[default]
+    Auto,
+    /// Every pixel takes -s samples (the course's).
+    Off,
+}
+
 /// The built-in scenes a binary renders when no scene file is given.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Builtin {

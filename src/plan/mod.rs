@@ -9,13 +9,15 @@
 //! | lens | `-b > 0` | the lens sample and its disk warp per camera ray |
 //! | environment samples ([`light_samples`]) | an environment map lights the scene and `-l` is not given | nothing: four samples of the map instead of one at a vertex whose BSDF is no sharper than the map (and not diffuse in a scene that casts caustics), less noise per second |
 //! | glass splits | glass (that reflects and refracts) in the scene, and not `--course` | nothing: it costs time, to lower the noise more: at the first [`GLASS_SPLITS`] glass vertices of the camera's chain of delta bounces the path follows both lobes instead of a coin's choice, more paths and less noise where the lobe the coin rarely takes sees a light |
+//! | glint samples ([`crate::glints`]) | an environment map, a mirror or glass, a pinhole camera, and not `--glints off` or `--course` | nothing: a pilot of five rays a pixel, then more samples (up to 16 times `-s`) for the pixels whose chains of mirror and glass bounces may see a small bright part of the map, at most half again the render's samples |
 //! | caustic casters | a mirror, glass or smooth conductor sphere, or a mirror-like mesh (and not `--casters off`) | nothing: it adds a sampling strategy where a scene has caustics, and costs nothing where it has none |
 //!
 //! Specialising changes no expectation: the plan only drops work whose
 //! result is zero or whose weight is 1 (MIS with no second strategy),
 //! splits a light's sample into several whose mean estimates the same,
 //! or follows both of glass's lobes, each weighted by the probability the
-//! coin would have given it. The
+//! coin would have given it; glint samples change how many samples a pixel
+//! takes, by a rule that depends on the scene alone. The
 //! plan also says when a flag hides an effect the scene has: a mirror shows
 //! lit surfaces only from `-m 2`, glass shows light through it from `-m 3`.
 
@@ -23,10 +25,11 @@ pub mod light_samples;
 
 use crate::depth_of_field::ThinLens;
 use crate::direct::DirectLights;
+use crate::glints;
 use crate::global::{
     DirectStrategy, PathTracer, Roulette, GLASS_SPLITS, THROUGHPUT_ROULETTE_AFTER,
 };
-use crate::lights::LightSet;
+use crate::lights::{Light, LightSet};
 use crate::materials::{Bsdf, BsdfOptions};
 use crate::math::{luminance, Rgb};
 use crate::sampling::SamplerKind;
@@ -117,6 +120,9 @@ pub struct Plan {
     /// [`PathTracer::glass_splits`]: [`GLASS_SPLITS`] where the scene has
     /// glass, else 0.
     pub glass_splits: u32,
+    /// Whether pixels that see an environment map along mirror and glass
+    /// bounces get more samples where they may see a glint ([`crate::glints`]).
+    pub glints: bool,
     /// One line per decision, `plan: ...`.
     pub lines: Vec<String>,
     /// Effects the flags hide, one line each.
@@ -207,6 +213,11 @@ impl Plan {
         });
         let glass_splits = if bsdfs.glass { GLASS_SPLITS } else { 0 };
         lines.push(glass_splits_line(glass_splits, bsdfs.glass, "the plan's"));
+        let environment = lights
+            .infinite()
+            .any(|(_, l)| matches!(l, Light::Environment(_)));
+        let glints = glints::Decision::new(environment, bsdfs.delta, lens.is_pinhole());
+        lines.push(glints.line());
         let mut warnings = Vec::new();
         let m = tracer.max_depth;
         if bsdfs.mirror && m < 2 {
@@ -232,9 +243,22 @@ impl Plan {
             mis,
             lens: !lens.is_pinhole(),
             glass_splits,
+            glints: glints.on(),
             lines,
             warnings,
         }
+    }
+
+    /// The plan without glint samples where the flags turn them off
+    /// (`--glints off`, `--course`).
+    pub fn with_glints(mut self, allowed: bool) -> Self {
+        if self.glints && !allowed {
+            self.glints = false;
+            if let Some(old) = self.lines.iter_mut().find(|l| l.starts_with(glints::LINE)) {
+                *old = glints::Decision::Asked.line();
+            }
+        }
+        self
     }
 
     /// The plan with a line saying where the render's numbers come from.

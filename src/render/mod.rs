@@ -170,13 +170,31 @@ pub fn render_image(
     adaptive: Option<Adaptive>,
     radiance: impl Fn(&Ray, &mut PixelSampler) -> Rgb + Sync,
 ) -> Rendered {
+    render_image_with_factors(camera, settings, None, adaptive, radiance)
+}
+
+/// [`render_image`] with pixel `(x, y)` taking `factors[y * width + x]`
+/// times `settings.samples_per_pixel` samples (`None`: once); the sampler
+/// is built for the largest factor.
+pub fn render_image_with_factors(
+    camera: &Camera,
+    settings: &RenderSettings,
+    factors: Option<(&[u32], u32)>,
+    adaptive: Option<Adaptive>,
+    radiance: impl Fn(&Ray, &mut PixelSampler) -> Rgb + Sync,
+) -> Rendered {
     let size = (settings.width, settings.height);
-    let (estimates, stats) = render_tiles(settings, |x, y, sampler| {
+    let sampler_settings = RenderSettings {
+        samples_per_pixel: settings.samples_per_pixel * factors.map_or(1, |f| f.1),
+        ..*settings
+    };
+    let (estimates, stats) = render_tiles(&sampler_settings, |x, y, sampler| {
+        let factor = factors.map_or(1, |(f, _)| f[(y * size.0 + x) as usize]);
         estimate_pixel(
             camera,
             size,
             (x, y),
-            settings.samples_per_pixel,
+            settings.samples_per_pixel * factor,
             adaptive,
             sampler,
             &radiance,
@@ -189,6 +207,52 @@ pub fn render_image(
 mod tests {
     use super::*;
     use crate::sampling::SamplerKind;
+    use std::sync::Mutex;
+
+    /// A pixel with factor 4 at 4 samples takes 16, and with ZSobol their
+    /// numbers in a dimension pair are a (0, 4, 2)-net: each of the 16
+    /// elementary boxes `2^-a x 2^-(4-a)` holds one. (With the sampler
+    /// built for 4 samples instead of 16, samples 4 to 15 would be other
+    /// pixels' points, and the boxes would not each hold one.)
+    #[test]
+    fn a_pixels_factor_multiplies_its_samples_which_stay_a_net() {
+        let settings = RenderSettings {
+            width: 2,
+            height: 1,
+            samples_per_pixel: 4,
+            threads: Some(1),
+            seed: 3,
+            sampler: SamplerKind::ZSobol,
+            progress: false,
+        };
+        let camera = Camera::look_at(glam::Vec3::Z, glam::Vec3::ZERO, glam::Vec3::Y, 40.0, 30.0);
+        let points = Mutex::new(Vec::new());
+        let rendered = render_image_with_factors(
+            &camera,
+            &settings,
+            Some((&[1, 4], 4)),
+            None,
+            |ray, sampler| {
+                if ray.dir.x > 0.0 {
+                    points.lock().unwrap().push(sampler.get_2d());
+                }
+                Rgb::ONE
+            },
+        );
+        let samples: Vec<u32> = rendered.estimates.iter().map(|e| e.samples).collect();
+        assert_eq!(samples, [4, 16]);
+        let points = points.into_inner().unwrap();
+        assert_eq!(points.len(), 16);
+        for a in 0..=4 {
+            let (nx, ny) = (1u32 << a, 1u32 << (4 - a));
+            let mut boxes = vec![0; 16];
+            for p in &points {
+                let (i, j) = ((p.x * nx as f32) as u32, (p.y * ny as f32) as u32);
+                boxes[(j * nx + i) as usize] += 1;
+            }
+            assert!(boxes.iter().all(|&n| n == 1), "{nx} x {ny}: {boxes:?}");
+        }
+    }
 
     #[test]
     fn samples_near_the_float_maximum_average_to_a_finite_pixel() {

@@ -12,6 +12,7 @@ use crate::environment::{
     builtin_sky, EnvironmentError, EnvironmentLight, EnvironmentMap, EnvironmentSampling,
     EnvironmentWeights,
 };
+use crate::glints::{allocate, Allocation};
 use crate::global::{DirectStrategy, PathTracer, Roulette};
 use crate::intersect::Intersector;
 use crate::lights::LightSet;
@@ -19,7 +20,7 @@ use crate::plan::light_samples::with_environment_samples;
 use crate::plan::Plan;
 use crate::raygen::Camera;
 use crate::render::rendered::rate_image_path;
-use crate::render::{render_image, RenderSettings, Rendered};
+use crate::render::{render_image_with_factors, RenderSettings, Rendered};
 use crate::sampling::SamplerKind;
 use crate::scene::info::describe;
 use crate::scene::Scene;
@@ -34,9 +35,27 @@ pub fn render_lighting<I: Intersector>(
     settings: &RenderSettings,
     adaptive: Option<Adaptive>,
 ) -> Rendered {
-    render_image(camera, settings, adaptive, |ray, rng| {
-        tracer.radiance(world, ray, rng)
-    })
+    render_lighting_allocated(world, tracer, camera, settings, adaptive, None)
+}
+
+/// [`render_lighting`] with each pixel's samples multiplied by its factor
+/// in `allocation` ([`crate::glints`]); the pilot's time is counted in the
+/// render's.
+pub fn render_lighting_allocated<I: Intersector>(
+    world: &World<I>,
+    tracer: &PathTracer,
+    camera: &Camera,
+    settings: &RenderSettings,
+    adaptive: Option<Adaptive>,
+    allocation: Option<&Allocation>,
+) -> Rendered {
+    let factors = allocation.map(|a| (a.factors.as_slice(), a.largest));
+    let mut rendered =
+        render_image_with_factors(camera, settings, factors, adaptive, |ray, rng| {
+            tracer.radiance(world, ray, rng)
+        });
+    rendered.stats.seconds += allocation.map_or(0.0, |a| a.seconds);
+    rendered
 }
 
 /// The direct-lighting strategy the flags ask for: `-H` for hemisphere
@@ -123,7 +142,8 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
         let plan = Plan::new(&scene, &lights, &part.tracer, &camera.lens)
             .with_sampler(args.sampler_kind())
             .with_casters(&Casters::new(&scene, &lights, args.world_options().casters))
-            .with_glass_splits(args.glass_splits());
+            .with_glass_splits(args.glass_splits())
+            .with_glints(args.glints());
         for line in &plan.lines {
             crate::say!("{line}")?;
         }
@@ -143,7 +163,8 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
     let world =
         World::with_options(&scene, &accel, args.world_options()).with_environment(environment);
     let plan = Plan::new(&scene, &world.lights, &part.tracer, &camera.lens)
-        .with_glass_splits(args.glass_splits());
+        .with_glass_splits(args.glass_splits())
+        .with_glints(args.glints() && !args.no_plan);
     for warning in &plan.warnings {
         crate::say_err!("warning: {}: {warning}", scene.source);
     }
@@ -156,7 +177,25 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
         }
     };
     let settings = args.render_settings();
-    let rendered = render_lighting(&world, &tracer, &camera, &settings, part.adaptive);
+    let glints = plan.glints && settings.samples_per_pixel > 1 && part.adaptive.is_none();
+    let allocation = glints.then(|| allocate(&world, &camera, &settings, tracer.max_depth));
+    if let Some(a) = &allocation {
+        crate::say_err!(
+            "glints: {} pixels take more samples (up to {} times -s), {:.2} % more samples in all; pilot {:.3} s (in the render's time)",
+            a.pixels_above_one(),
+            a.largest,
+            100.0 * a.extra_fraction(),
+            a.seconds
+        );
+    }
+    let rendered = render_lighting_allocated(
+        &world,
+        &tracer,
+        &camera,
+        &settings,
+        part.adaptive,
+        allocation.as_ref(),
+    );
     report_render(&rendered)?;
     let bound = match settings.sampler {
         SamplerKind::ZSobol => ", assuming independent samples: an upper bound with zsobol",
@@ -176,7 +215,8 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
     write_film(&rendered, args)?;
     if part.rate_image {
         let path = rate_image_path(&args.output_path());
-        rendered.write_rate_image(settings.samples_per_pixel, &path)?;
+        let largest = allocation.as_ref().map_or(1, |a| a.largest);
+        rendered.write_rate_image(settings.samples_per_pixel * largest, &path)?;
         crate::say!("wrote {}", path.display())?;
     }
     Ok(())

@@ -10,6 +10,7 @@ pub use geometry::{
 };
 pub use lighting::{
     environment_light, part3, part4, part5, part6, part7, part8, pathtracer, render_lighting,
+    render_lighting_allocated,
 };
 
 use std::error::Error;

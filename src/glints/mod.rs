@@ -1,0 +1,292 @@
+//! Glints: more camera samples for the pixels that see a small, bright
+//! part of an environment map (a sun) along a chain of mirror or glass
+//! bounces.
+//!
+//! Such a pixel's value is the map seen over the small set of directions
+//! its chain reflects the pixel into; where that set covers the sun in
+//! part, a sample finds the sun with a small probability `p` and the
+//! pixel's variance is about `p L_sun^2` a sample, which no strategy but
+//! the pixel's own samples reduces (no vertex of the chain chooses
+//! anything). These few pixels can hold almost all of an image's error.
+//!
+//! Before the render, a deterministic *pilot* traces, for each pixel, the
+//! chains of delta bounces ([`pilot`]) from its centre and its four
+//! corners, and matches their leaves by the lobes taken. A leaf seen by
+//! `k` of the five rays escapes over a disk of directions whose radius
+//! `r` is the largest angle from their mean direction; over that disk
+//! the map's luminance lies in `[m, M]` with mean `mu` ([`bounds`]). A
+//! sample of the pixel then sees `w L` with probability `a = k / 5`,
+//! where `w` is the chain's throughput, so its variance is at most
+//!
+//! ```text
+//! sigma_p^2 = sum over leaves of  a w^2 ((M - mu)(mu - m) + (1 - a) mu^2)
+//! ```
+//!
+//! Samples are then given in proportion to the standard deviation
+//! (Neyman 1934, "On the two different aspects of the representative
+//! method", *J. R. Stat. Soc.* 97: with `n_p` samples for a pixel of
+//! per-sample deviation `sigma_p`, `sum sigma_p^2 / n_p` for a fixed
+//! total is least when `n_p` is proportional to `sigma_p`): pixel `p`
+//! gets `spp k_p` samples, `k_p` the power of two at most
+//! `sigma_p / sigma_ref`, between 1 and `K`, with `sigma_ref` the map's
+//! mean luminance (the radiance scale of the rest of the image). `K`
+//! starts at 16 and is halved while the extra samples would be more than
+//! half of the render's.
+//!
+//! The allocation depends on the scene alone, not on any random number of
+//! the render, so each pixel's estimate is still the mean of independent
+//! (or stratified) unbiased samples: the image's expectation does not
+//! change. What changes is the number of samples: a pixel's sample count
+//! shows in the sample-rate image.
+
+pub mod bounds;
+pub mod pilot;
+
+use std::time::Instant;
+
+use glam::{Vec2, Vec3};
+use rayon::prelude::*;
+
+use crate::intersect::Intersector;
+use crate::lights::Light;
+use crate::raygen::Camera;
+use crate::render::{pixel_ray, RenderSettings};
+use crate::world::World;
+use bounds::MapBounds;
+use pilot::{chain_leaves, Leaves};
+
+/// The most a pixel's samples are multiplied by.
+pub const MAX_FACTOR: u32 = 16;
+
+/// The pixel offsets of the pilot's rays: the centre and the corners.
+pub const PILOT_OFFSETS: [Vec2; 5] = [
+    Vec2::new(0.5, 0.5),
+    Vec2::new(0.0, 0.0),
+    Vec2::new(1.0, 0.0),
+    Vec2::new(0.0, 1.0),
+    Vec2::new(1.0, 1.0),
+];
+
+/// Radius (radians, about 3 degrees) of the disk a leaf seen by one
+/// pilot ray alone is given: its spread is unknown.
+const LONE_LEAF_RADIUS: f32 = 0.05;
+
+/// The start of the render plan's line.
+pub const LINE: &str = "plan: glint samples:";
+
+/// The render plan's decision ([`crate::plan::Plan::glints`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Decision {
+    On,
+    NoEnvironment,
+    NoDelta,
+    Lens,
+    /// Turned off by a flag.
+    Asked,
+}
+
+impl Decision {
+    /// On where an environment map lights a scene with mirror or glass,
+    /// seen through a pinhole (the pilot traces pinhole rays).
+    pub fn new(environment: bool, delta: bool, pinhole: bool) -> Self {
+        match (environment, delta, pinhole) {
+            (false, _, _) => Decision::NoEnvironment,
+            (_, false, _) => Decision::NoDelta,
+            (_, _, false) => Decision::Lens,
+            _ => Decision::On,
+        }
+    }
+
+    pub fn on(self) -> bool {
+        self == Decision::On
+    }
+
+    pub fn line(self) -> String {
+        let why = match self {
+            Decision::On => {
+                return format!(
+                    "{LINE} on: pixels whose chains of mirror and glass bounces may see a small, \
+                     bright part of the map take up to {MAX_FACTOR} times -s samples (a pilot of \
+                     {} rays a pixel decides; at most half again the render's samples; with -s above 1 \
+                     and without -a)",
+                    PILOT_OFFSETS.len()
+                )
+            }
+            Decision::NoEnvironment => "no environment map",
+            Decision::NoDelta => "no mirror or glass",
+            Decision::Lens => "a thin lens: the pilot traces pinhole rays",
+            Decision::Asked => "--glints off or --course",
+        };
+        format!("{LINE} off ({why}): every pixel takes -s samples")
+    }
+}
+
+/// How a render's samples were shared out.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Allocation {
+    /// Each pixel's factor on `-s`, row by row (row 0 at the top): a power
+    /// of two from 1 to `largest`.
+    pub factors: Vec<u32>,
+    pub largest: u32,
+    /// Seconds the pilot took.
+    pub seconds: f64,
+}
+
+impl Allocation {
+    /// Pixels that take more than `-s` samples.
+    pub fn pixels_above_one(&self) -> usize {
+        self.factors.iter().filter(|&&k| k > 1).count()
+    }
+
+    /// The extra samples over the render's `-s` a pixel, as a fraction.
+    pub fn extra_fraction(&self) -> f64 {
+        let extra: u64 = self.factors.iter().map(|&k| k as u64 - 1).sum();
+        extra as f64 / self.factors.len().max(1) as f64
+    }
+}
+
+/// Each pixel's sample factor for a render of `settings`' size, from a
+/// pilot of the chains of delta bounces up to `max_bounces` bounces: all 1
+/// where the scene has no environment map or no pixel sees one along such
+/// a chain with any variance.
+pub fn allocate<I: Intersector + Sync>(
+    world: &World<I>,
+    camera: &Camera,
+    settings: &RenderSettings,
+    max_bounces: u32,
+) -> Allocation {
+    let start = Instant::now();
+    let size = (settings.width, settings.height);
+    let env = world.lights.infinite().find_map(|(_, light)| match light {
+        Light::Environment(env) => Some(env),
+        _ => None,
+    });
+    let pixels = (size.0 * size.1) as usize;
+    let Some(env) = env else {
+        return Allocation {
+            factors: vec![1; pixels],
+            largest: 1,
+            seconds: start.elapsed().as_secs_f64(),
+        };
+    };
+    let bounds = MapBounds::new(env.map());
+    let reference = bounds.sphere_mean.max(f32::MIN_POSITIVE);
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(settings.threads.unwrap_or(0))
+        .build()
+        .expect("a thread pool");
+    let pilots: Vec<Pilot> = pool.install(|| {
+        (0..size.1)
+            .into_par_iter()
+            .flat_map_iter(|y| (0..size.0).map(move |x| (x, y)))
+            .map(|(x, y)| {
+                let chains = PILOT_OFFSETS.map(|offset| {
+                    let ray = pixel_ray(camera, size, (x, y), offset, Vec2::splat(0.5));
+                    chain_leaves(world, &ray, max_bounces)
+                });
+                Pilot {
+                    ratio: pixel_deviation(&chains, &bounds) / reference,
+                    cost: chains.iter().map(sample_cost).sum::<f32>() / chains.len() as f32,
+                }
+            })
+            .collect()
+    });
+    let (factors, largest) = factors(&pilots);
+    Allocation {
+        factors,
+        largest,
+        seconds: start.elapsed().as_secs_f64(),
+    }
+}
+
+/// What the pilot says of a pixel.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Pilot {
+    /// The bound on its per-sample deviation over the reference.
+    pub ratio: f32,
+    /// What a sample costs, in rays ([`sample_cost`]).
+    pub cost: f32,
+}
+
+/// Rays a path traces past a surface that is not a delta BSDF, as the
+/// pilot counts a sample's cost: about two bounces of a continuation and
+/// a light sample's shadow ray each.
+pub const SCATTERED_COST: f32 = 4.0;
+
+/// The rays a camera sample along `chain` costs, about: the chain's own
+/// and [`SCATTERED_COST`] for each way that goes on from a surface.
+pub fn sample_cost(chain: &Leaves) -> f32 {
+    chain.rays as f32 + SCATTERED_COST * chain.scattered as f32
+}
+
+/// The factors for the pixels the pilot saw: by Neyman's allocation with
+/// costs (`n_p` proportional to `sigma_p / sqrt(c_p)`), the power of two
+/// at most `ratio sqrt(c_mean / c_p)`, from 1 to a cap that starts at
+/// [`MAX_FACTOR`] and halves while the extra samples would cost more than
+/// half of the render's samples. Returns them and the largest.
+pub fn factors(pilots: &[Pilot]) -> (Vec<u32>, u32) {
+    let total: f64 = pilots.iter().map(|p| p.cost as f64).sum();
+    let mean_cost = (total / pilots.len().max(1) as f64) as f32;
+    let factor = |p: &Pilot, cap: u32| -> u32 {
+        let wanted = p.ratio * (mean_cost / p.cost.max(1.0)).sqrt();
+        // `max` takes a NaN to 1.
+        let k = wanted.max(1.0).min(cap as f32) as u32;
+        1 << (31 - k.leading_zeros())
+    };
+    let mut cap = MAX_FACTOR;
+    while cap > 1 {
+        let extra: f64 = pilots
+            .iter()
+            .map(|p| (factor(p, cap) - 1) as f64 * p.cost as f64)
+            .sum();
+        if 2.0 * extra <= total {
+            break;
+        }
+        cap /= 2;
+    }
+    let factors: Vec<u32> = pilots.iter().map(|p| factor(p, cap)).collect();
+    let largest = factors.iter().copied().max().unwrap_or(1);
+    (factors, largest)
+}
+
+/// The bound `sigma_p` on a pixel's per-sample deviation from the leaves
+/// of its pilot chains.
+fn pixel_deviation(chains: &[Leaves], bounds: &MapBounds) -> f32 {
+    let mut variance = 0.0;
+    for (i, chain) in chains.iter().enumerate() {
+        for leaf in chain.iter() {
+            // Each key once: at the first chain that has it.
+            if chains[..i]
+                .iter()
+                .any(|c| c.iter().any(|l| l.key == leaf.key))
+            {
+                continue;
+            }
+            let same = || {
+                chains[i..]
+                    .iter()
+                    .filter_map(|c| c.iter().find(|l| l.key == leaf.key))
+            };
+            let mean = same().map(|l| l.dir).sum::<Vec3>().normalize_or_zero();
+            if mean == Vec3::ZERO {
+                continue;
+            }
+            let seen_by = same().count();
+            let radius = if seen_by == 1 {
+                LONE_LEAF_RADIUS
+            } else {
+                same()
+                    .map(|l| l.dir.dot(mean).clamp(-1.0, 1.0).acos())
+                    .fold(0.0, f32::max)
+            };
+            let weight = same().map(|l| l.weight).fold(0.0, f32::max);
+            let range = bounds.over_disk(mean, radius);
+            let a = seen_by as f32 / chains.len() as f32;
+            variance += a
+                * weight
+                * weight
+                * (range.variance_bound() + (1.0 - a) * range.mean * range.mean);
+        }
+    }
+    variance.sqrt()
+}

@@ -1,0 +1,254 @@
+//! Glint samples (`pathtracer::glints`): the pixels that may see a small,
+//! bright part of an environment map along mirror and glass bounces take
+//! more samples. The allocation goes where the sun's glint is and
+//! nowhere under a map without one; it changes each pixel's number of
+//! samples, never the image's expectation (a two-sample z-test over
+//! seeds), and lowers the error where the glint is.
+//!
+//! The statistical tests use fixed seeds at [`ALPHA`] = 1e-4 per test
+//! (the policy is in `tests/common/stats.rs`).
+
+mod common;
+
+use common::{accel, assert_means_agree, diffuse, tracer, MeanEstimate, SceneBuilder, ALPHA};
+use glam::Vec3;
+use pathtracer::bvh::BvhAccel;
+use pathtracer::cli::drivers::render_lighting_allocated;
+use pathtracer::environment::{EnvironmentLight, EnvironmentMap, EnvironmentSampling};
+use pathtracer::glints::{allocate, Allocation, MAX_FACTOR};
+use pathtracer::intersect::Intersector;
+use pathtracer::math::luminance;
+use pathtracer::raygen::Camera;
+use pathtracer::render::{pixel_ray, RenderSettings, Rendered};
+use pathtracer::sampling::SamplerKind;
+use pathtracer::scene::{Material, Scene};
+use pathtracer::world::World;
+
+use common::LIGHTS;
+
+const SIZE: (u32, u32) = (40, 30);
+const SPHERE_CENTER: Vec3 = Vec3::new(0.0, 0.5, 0.0);
+const SPHERE_RADIUS: f32 = 0.5;
+
+const MIRROR: Material = Material::Mirror {
+    reflectance: Vec3::ONE,
+};
+
+/// The sun's direction and angular radius (4 degrees), and its radiance
+/// against the sky's 0.5.
+const SUN_RADIANCE: f32 = 300.0;
+fn sun() -> Vec3 {
+    Vec3::new(0.6, 0.5, 0.4).normalize()
+}
+
+/// A sky of 0.5 with a sun of 4 degrees' radius.
+fn sun_map() -> EnvironmentMap {
+    let cos_radius = 4f32.to_radians().cos();
+    EnvironmentMap::from_fn("sun", 256, 128, |d| {
+        Vec3::splat(if d.dot(sun()) >= cos_radius {
+            SUN_RADIANCE
+        } else {
+            0.5
+        })
+    })
+    .unwrap()
+}
+
+/// A mirror ball on a diffuse floor.
+fn ball_on_a_floor() -> Scene {
+    let mut b = SceneBuilder::new();
+    let floor = b.material(diffuse(0.5));
+    let mirror = b.material(MIRROR);
+    b.floor(floor, 3.0)
+        .sphere(SPHERE_CENTER, SPHERE_RADIUS, mirror);
+    b.finish()
+}
+
+fn camera() -> Camera {
+    Camera::look_at(Vec3::new(0.0, 1.0, 2.2), SPHERE_CENTER, Vec3::Y, 40.0, 30.0)
+}
+
+fn settings(spp: u32, seed: u64) -> RenderSettings {
+    RenderSettings {
+        width: SIZE.0,
+        height: SIZE.1,
+        samples_per_pixel: spp,
+        threads: Some(2),
+        seed,
+        sampler: SamplerKind::ZSobol,
+        progress: false,
+    }
+}
+
+fn world_under<'a>(
+    scene: &'a Scene,
+    bvh: &'a BvhAccel,
+    map: EnvironmentMap,
+) -> World<'a, &'a BvhAccel> {
+    World::new(scene, bvh).with_environment(Some(EnvironmentLight::new(
+        map,
+        EnvironmentSampling::Importance,
+    )))
+}
+
+/// The pixel whose centre sees the sun in the ball: where the ball's
+/// normal halves the angle between the eye and the sun.
+fn glint_pixel(world: &World<&BvhAccel>) -> (u32, u32) {
+    let eye = camera().position;
+    let mut best = ((0, 0), f32::MIN);
+    for y in 0..SIZE.1 {
+        for x in 0..SIZE.0 {
+            let ray = pixel_ray(
+                &camera(),
+                SIZE,
+                (x, y),
+                glam::Vec2::splat(0.5),
+                glam::Vec2::splat(0.5),
+            );
+            if let Some(hit) = world.intersector.intersect(&ray) {
+                let n = (hit.p - SPHERE_CENTER).normalize();
+                if (hit.p - SPHERE_CENTER).length() < SPHERE_RADIUS * 1.01 {
+                    let half = ((eye - hit.p).normalize() + sun()).normalize();
+                    if n.dot(half) > best.1 {
+                        best = ((x, y), n.dot(half));
+                    }
+                }
+            }
+        }
+    }
+    best.0
+}
+
+/// The allocation under the sun: factors are powers of two up to
+/// [`MAX_FACTOR`], the extra samples at most half of the render's, the
+/// pixel of the sun's glint in the ball among those with more, and every
+/// pixel with more sees the ball (the floor and the sky have no chain of
+/// mirror bounces). Under the same sky without its sun, and with no map,
+/// every pixel takes `-s`.
+#[test]
+fn samples_go_to_the_glint_and_only_there() {
+    let scene = ball_on_a_floor();
+    let bvh = accel(&scene);
+    let world = world_under(&scene, &bvh, sun_map());
+    let a = allocate(&world, &camera(), &settings(16, 0), 5);
+    assert_eq!(a.factors.len(), (SIZE.0 * SIZE.1) as usize);
+    assert!(a
+        .factors
+        .iter()
+        .all(|k| k.is_power_of_two() && *k <= MAX_FACTOR));
+    assert!(a.extra_fraction() <= 0.5, "{}", a.extra_fraction());
+    let (gx, gy) = glint_pixel(&world);
+    let at = |x: u32, y: u32| a.factors[(y * SIZE.0 + x) as usize];
+    eprintln!(
+        "glint pixel ({gx}, {gy}): factor {}; {} pixels above 1, largest {}, extra {:.3}",
+        at(gx, gy),
+        a.pixels_above_one(),
+        a.largest,
+        a.extra_fraction()
+    );
+    assert!(at(gx, gy) > 1, "the glint's pixel takes {}", at(gx, gy));
+    for y in 0..SIZE.1 {
+        for x in 0..SIZE.0 {
+            if at(x, y) > 1 {
+                let sees_ball = [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0), (0.5, 0.5)]
+                    .iter()
+                    .any(|&(u, v)| {
+                        let ray = pixel_ray(
+                            &camera(),
+                            SIZE,
+                            (x, y),
+                            glam::Vec2::new(u, v),
+                            glam::Vec2::splat(0.5),
+                        );
+                        world
+                            .intersector
+                            .intersect(&ray)
+                            .is_some_and(|h| (h.p - SPHERE_CENTER).length() < SPHERE_RADIUS * 1.01)
+                    });
+                assert!(
+                    sees_ball,
+                    "pixel ({x}, {y}) takes {} but does not see the ball",
+                    at(x, y)
+                );
+            }
+        }
+    }
+    let sky = EnvironmentMap::from_fn("sky", 256, 128, |_| Vec3::splat(0.5)).unwrap();
+    let uniform = allocate(
+        &world_under(&scene, &bvh, sky),
+        &camera(),
+        &settings(16, 0),
+        5,
+    );
+    assert_eq!((uniform.largest, uniform.pixels_above_one()), (1, 0));
+    let dark = allocate(&World::new(&scene, &bvh), &camera(), &settings(16, 0), 5);
+    assert_eq!((dark.largest, dark.pixels_above_one()), (1, 0));
+}
+
+fn render(world: &World<&BvhAccel>, allocation: Option<&Allocation>, seed: u64) -> Rendered {
+    let tracer = tracer(LIGHTS, 5, false);
+    render_lighting_allocated(
+        world,
+        &tracer,
+        &camera(),
+        &settings(16, seed),
+        None,
+        allocation,
+    )
+}
+
+fn image_mean(r: &Rendered) -> f64 {
+    r.film
+        .pixels
+        .iter()
+        .map(|&p| luminance(p) as f64)
+        .sum::<f64>()
+        / r.film.pixels.len() as f64
+}
+
+/// Each pixel takes its factor times `-s` samples; over 40 seeds the
+/// image's mean luminance with and without glint samples agrees
+/// (two-sample z-test); and the variance over the seeds of the pixels
+/// that take more is less than half without (it read 0.0 when written).
+#[test]
+fn glint_samples_change_the_variance_not_the_mean() {
+    let scene = ball_on_a_floor();
+    let bvh = accel(&scene);
+    let world = world_under(&scene, &bvh, sun_map());
+    let a = allocate(&world, &camera(), &settings(16, 0), 5);
+    let seeds = 40;
+    let (mut plain, mut allocated) = (Vec::new(), Vec::new());
+    for seed in 0..seeds {
+        plain.push(render(&world, None, 1000 + seed));
+        allocated.push(render(&world, Some(&a), 2000 + seed));
+    }
+    for (e, k) in allocated[0].estimates.iter().zip(&a.factors) {
+        assert_eq!(e.samples, 16 * k);
+    }
+    assert!(plain[0].estimates.iter().all(|e| e.samples == 16));
+    let means = |renders: &[Rendered]| MeanEstimate::of(renders.iter().map(image_mean));
+    let (without, with) = (means(&plain), means(&allocated));
+    eprintln!(
+        "image mean: without {:.5} +- {:.5}, with {:.5} +- {:.5}",
+        without.mean, without.se, with.mean, with.se
+    );
+    assert_means_agree(
+        "image mean, without and with glint samples",
+        without,
+        with,
+        ALPHA / 2.0,
+    );
+    let variance_where_more = |renders: &[Rendered]| -> f64 {
+        let mut total = 0.0;
+        for (i, k) in a.factors.iter().enumerate() {
+            if *k > 1 {
+                let values = renders.iter().map(|r| luminance(r.film.pixels[i]) as f64);
+                total += MeanEstimate::of(values).se.powi(2) * seeds as f64;
+            }
+        }
+        total
+    };
+    let (v0, v1) = (variance_where_more(&plain), variance_where_more(&allocated));
+    eprintln!("variance over the pixels with more samples: without {v0:.4}, with {v1:.4}");
+    assert!(v1 < 0.5 * v0, "{v1} against {v0}");
+}
