@@ -8,6 +8,7 @@ mod common;
 use common::*;
 use glam::Vec3;
 use pathtracer::depth_of_field::ThinLens;
+use pathtracer::environment::{EnvironmentLight, EnvironmentMap, EnvironmentSampling};
 use pathtracer::global::GLASS_SPLITS;
 use pathtracer::lights::{LightConvention, LightSet};
 use pathtracer::plan::Plan;
@@ -197,4 +198,61 @@ fn the_plan_splits_glass_where_the_scene_has_it() {
     assert!(line(&four).contains("4 (asked)"), "{}", line(&four));
     let unasked = plan_of(&materials_box(), 5).with_glass_splits(None);
     assert_eq!(unasked.glass_splits, GLASS_SPLITS);
+}
+
+/// Glint samples where an environment map lights mirror or glass seen
+/// through a pinhole: the materials box (mirror and glass spheres) under
+/// a map; not without the map, not in the point-lit diffuse scene under
+/// it, not through a thin lens, and not where the flags turn them off,
+/// each line saying why.
+#[test]
+fn the_plan_samples_glints_where_a_map_lights_mirror_or_glass() {
+    let map = || {
+        let sky = EnvironmentMap::from_fn("sky", 16, 8, |_| Vec3::ONE).unwrap();
+        EnvironmentLight::new(sky, EnvironmentSampling::Importance)
+    };
+    let plan = |scene: &Scene, environment: bool, lens: &ThinLens| {
+        let mut lights = LightSet::new(scene, LightConvention::Physical);
+        if environment {
+            lights = lights.with_environment(map());
+        }
+        Plan::new(scene, &lights, &tracer(LIGHTS, 5, true), lens)
+    };
+    let line = |plan: &Plan| {
+        plan.lines
+            .iter()
+            .find(|l| l.starts_with("plan: glint samples: "))
+            .expect("a glint samples line")
+            .clone()
+    };
+    let on = plan(&materials_box(), true, &ThinLens::PINHOLE);
+    assert!(
+        on.glints && line(&on).contains("samples: on"),
+        "{}",
+        line(&on)
+    );
+    let lens = ThinLens {
+        radius: 0.05,
+        focal_distance: 3.0,
+    };
+    for (plan, why) in [
+        (
+            plan(&materials_box(), false, &ThinLens::PINHOLE),
+            "no environment map",
+        ),
+        (
+            plan(&point_lit(), true, &ThinLens::PINHOLE),
+            "no mirror or glass",
+        ),
+        (plan(&materials_box(), true, &lens), "a thin lens"),
+        (on.clone().with_glints(false), "--glints off"),
+    ] {
+        assert!(!plan.glints, "{}", line(&plan));
+        assert!(
+            line(&plan).contains(&format!("off ({why}")),
+            "{}",
+            line(&plan)
+        );
+    }
+    assert!(on.with_glints(true).glints);
 }

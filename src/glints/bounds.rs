@@ -70,9 +70,22 @@ impl Level {
     }
 }
 
-/// The luminance pyramid of a map (the map's own texels at level 0).
+/// The widest base level kept: the map's texels in blocks so that it is
+/// at most this many columns wide (a 0.18 degree texel), so that an 8k
+/// map's pyramid takes 34 MB, not 0.5 GB, beside the map's own 0.5 GB
+/// (a 2k map keeps its texels, and the pyramid its 34 MB while the
+/// pilot runs). A coarser base only widens the ranges.
+pub const BASE_WIDTH: usize = 2048;
+
+/// The luminance pyramid of a map: level 0 the map in blocks of
+/// `block x block` texels, each level above of the 2 x 2 blocks below
+/// (rounded up: a last odd column or row is taken with its neighbour).
 pub struct MapBounds {
     levels: Vec<Level>,
+    /// Map texels a base texel spans, each way.
+    block: usize,
+    /// The map's size in texels.
+    map_size: (usize, usize),
     /// Mean luminance over the sphere (texels weighted by solid angle).
     pub sphere_mean: f32,
 }
@@ -80,33 +93,47 @@ pub struct MapBounds {
 impl MapBounds {
     pub fn new(map: &EnvironmentMap) -> Self {
         let (width, height) = (map.width(), map.height());
+        let block = width.div_ceil(BASE_WIDTH);
+        let (base_width, base_height) = (width.div_ceil(block), height.div_ceil(block));
+        let mut base = vec![
+            Range {
+                max: f32::NEG_INFINITY,
+                min: f32::INFINITY,
+                mean: 0.0,
+            };
+            base_width * base_height
+        ];
+        let mut counts = vec![0u32; base.len()];
         let mut weighted = 0.0f64;
         let mut weights = 0.0f64;
-        let mut ranges = Vec::with_capacity(width * height);
         for j in 0..height {
             let sin_theta = (PI * (j as f32 + 0.5) / height as f32).sin() as f64;
             for i in 0..width {
                 let y = luminance(map.texel(i as i64, j as i64));
                 weighted += sin_theta * y as f64;
                 weights += sin_theta;
-                ranges.push(Range {
-                    max: y,
-                    min: y,
-                    mean: y,
-                });
+                let k = (j / block) * base_width + i / block;
+                let r = &mut base[k];
+                r.max = r.max.max(y);
+                r.min = r.min.min(y);
+                r.mean += y;
+                counts[k] += 1;
             }
         }
+        for (r, n) in base.iter_mut().zip(counts) {
+            r.mean /= n as f32;
+        }
         let mut levels = vec![Level {
-            width,
-            height,
-            ranges,
+            width: base_width,
+            height: base_height,
+            ranges: base,
         }];
         loop {
             let below = levels.last().expect("level 0");
             if below.width < 2 || below.height < 2 {
                 break;
             }
-            let (width, height) = (below.width / 2, below.height / 2);
+            let (width, height) = (below.width.div_ceil(2), below.height.div_ceil(2));
             let ranges = (0..height)
                 .flat_map(|j| (0..width).map(move |i| (i as i64, j as i64)))
                 .map(|(i, j)| {
@@ -125,6 +152,8 @@ impl MapBounds {
         }
         MapBounds {
             levels,
+            block,
+            map_size: (width, height),
             sphere_mean: (weighted / weights.max(f64::MIN_POSITIVE)) as f32,
         }
     }
@@ -132,14 +161,19 @@ impl MapBounds {
     /// The luminance's range over the disk of directions of angular radius
     /// `radius` around the unit direction `d`.
     pub fn over_disk(&self, d: Vec3, radius: f32) -> Range {
-        let level = self
-            .levels
-            .iter()
-            .find(|l| PI / l.height as f32 >= radius)
-            .unwrap_or_else(|| self.levels.last().expect("level 0"));
+        let (w, h) = (self.map_size.0 as f32, self.map_size.1 as f32);
+        // A level-k texel spans `block 2^k` map texels each way.
+        let span = |k: usize| (self.block << k) as f32;
+        let k = (0..self.levels.len())
+            .find(|&k| PI * span(k) / h >= radius)
+            .unwrap_or(self.levels.len() - 1);
+        let level = &self.levels[k];
         let uv = direction_to_uv(d);
-        let (w, h) = (level.width as f32, level.height as f32);
-        let (i, j) = ((uv.x * w) as i64, (uv.y * h) as i64);
+        // The map texel of `d`, then the level's texel holding it.
+        let texel_i = ((uv.x * w) as i64).min(self.map_size.0 as i64 - 1);
+        let texel_j = ((uv.y * h) as i64).min(self.map_size.1 as i64 - 1);
+        let cells = (self.block << k) as i64;
+        let (i, j) = (texel_i / cells, texel_j / cells);
         // The cap's longitudes: within asin(sin r / sin theta) of its
         // centre's, or all of them where it holds a pole.
         let theta = PI * uv.y;
@@ -147,9 +181,9 @@ impl MapBounds {
             level.width as i64
         } else {
             let half_width = (radius.sin() / theta.sin()).min(1.0).asin();
-            (half_width / (2.0 * PI / w)).ceil() as i64 + 1
+            (half_width / (2.0 * PI / w) / span(k)).ceil() as i64 + 1
         };
-        let columns = columns.min(level.width as i64 / 2);
+        let columns = columns.min(level.width as i64 / 2 + 1);
         Range::of(
             (j - 1..=j + 1)
                 .flat_map(|jj| (i - columns..=i + columns).map(move |ii| level.at(ii, jj))),
@@ -166,12 +200,11 @@ mod tests {
     use glam::Vec2;
     use rand::Rng;
 
-    /// A map whose texel `(i, j)` has luminance `1 + i + 1000 j` (rows and
-    /// columns told apart by value).
-    fn ramp() -> EnvironmentMap {
-        let (w, h) = (64, 32);
+    /// A `w x h` map whose texel `(i, j)` has luminance `1 + i + 10000 j`
+    /// (rows and columns told apart by value).
+    fn ramp(w: usize, h: usize) -> EnvironmentMap {
         let texels = (0..w * h)
-            .map(|k| Rgb::splat((1 + k % w + 1000 * (k / w)) as f32))
+            .map(|k| Rgb::splat((1 + k % w + 10000 * (k / w)) as f32))
             .collect();
         EnvironmentMap::new("ramp", w, h, texels).unwrap()
     }
@@ -190,11 +223,21 @@ mod tests {
 
     /// Every texel a direction of the disk falls in lies within the
     /// range: directions drawn uniformly in caps of random centres and
-    /// radii (poles included), their texels looked up at level 0.
+    /// radii (poles included), their texels looked up in the map; on a
+    /// map whose sides are powers of two, one whose are not (odd columns
+    /// and rows at coarser levels), and one wider than [`BASE_WIDTH`]
+    /// (the base in blocks). Checked by hand: the columns as `r / sin
+    /// theta` without the poles' whole rows fails near a pole.
     #[test]
     fn the_range_covers_every_texel_of_the_disk() {
-        let map = ramp();
-        let bounds = MapBounds::new(&map);
+        for (w, h) in [(64, 32), (100, 50), (2 * BASE_WIDTH + 6, BASE_WIDTH + 3)] {
+            covers_every_texel(&ramp(w, h));
+        }
+    }
+
+    fn covers_every_texel(map: &EnvironmentMap) {
+        let (w, h) = (map.width(), map.height());
+        let bounds = MapBounds::new(map);
         let mut rng = sampler(7, 1);
         for _ in 0..2000 {
             let centre = uv_to_direction(Vec2::new(rng.gen::<f32>(), rng.gen::<f32>()));
@@ -216,8 +259,8 @@ mod tests {
                 let d = cos * centre + sin * (phi.cos() * t + phi.sin() * b);
                 let uv = direction_to_uv(d);
                 let (i, j) = (
-                    ((uv.x * 64.0) as i64).min(63),
-                    ((uv.y * 32.0) as i64).min(31),
+                    ((uv.x * w as f32) as i64).min(w as i64 - 1),
+                    ((uv.y * h as f32) as i64).min(h as i64 - 1),
                 );
                 let y = luminance(map.texel(i, j));
                 assert!(

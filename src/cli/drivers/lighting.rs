@@ -12,7 +12,7 @@ use crate::environment::{
     builtin_sky, EnvironmentError, EnvironmentLight, EnvironmentMap, EnvironmentSampling,
     EnvironmentWeights,
 };
-use crate::glints::{allocate, Allocation};
+use crate::glints::{allocate, Allocation, MIN_SAMPLES};
 use crate::global::{DirectStrategy, PathTracer, Roulette};
 use crate::intersect::Intersector;
 use crate::lights::LightSet;
@@ -143,7 +143,7 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
             .with_sampler(args.sampler_kind())
             .with_casters(&Casters::new(&scene, &lights, args.world_options().casters))
             .with_glass_splits(args.glass_splits())
-            .with_glints(args.glints());
+            .with_glints(args.glints() && !args.no_plan);
         for line in &plan.lines {
             crate::say!("{line}")?;
         }
@@ -177,7 +177,8 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
         }
     };
     let settings = args.render_settings();
-    let glints = plan.glints && settings.samples_per_pixel > 1 && part.adaptive.is_none();
+    let glints =
+        plan.glints && settings.samples_per_pixel >= MIN_SAMPLES && part.adaptive.is_none();
     let allocation = glints.then(|| allocate(&world, &camera, &settings, tracer.max_depth));
     if let Some(a) = &allocation {
         crate::say_err!(
