@@ -16,6 +16,7 @@
 //! solid angle): a bound for choosing where samples go, not an estimate.
 
 use glam::Vec3;
+use rayon::prelude::*;
 use std::f32::consts::PI;
 
 use crate::environment::map::direction_to_uv;
@@ -95,34 +96,43 @@ impl MapBounds {
         let (width, height) = (map.width(), map.height());
         let block = width.div_ceil(BASE_WIDTH);
         let (base_width, base_height) = (width.div_ceil(block), height.div_ceil(block));
-        let mut base = vec![
-            Range {
-                max: f32::NEG_INFINITY,
-                min: f32::INFINITY,
-                mean: 0.0,
-            };
-            base_width * base_height
-        ];
-        let mut counts = vec![0u32; base.len()];
-        let mut weighted = 0.0f64;
-        let mut weights = 0.0f64;
-        for j in 0..height {
-            let sin_theta = (PI * (j as f32 + 0.5) / height as f32).sin() as f64;
-            for i in 0..width {
-                let y = luminance(map.texel(i as i64, j as i64));
-                weighted += sin_theta * y as f64;
-                weights += sin_theta;
-                let k = (j / block) * base_width + i / block;
-                let r = &mut base[k];
-                r.max = r.max.max(y);
-                r.min = r.min.min(y);
-                r.mean += y;
-                counts[k] += 1;
-            }
-        }
-        for (r, n) in base.iter_mut().zip(counts) {
-            r.mean /= n as f32;
-        }
+        // Rows of blocks in parallel: a 4k map has 8M texels to read.
+        let rows: Vec<(Vec<Range>, f64, f64)> = (0..base_height)
+            .into_par_iter()
+            .map(|bj| {
+                let mut row = vec![
+                    Range {
+                        max: f32::NEG_INFINITY,
+                        min: f32::INFINITY,
+                        mean: 0.0,
+                    };
+                    base_width
+                ];
+                let mut counts = vec![0u32; base_width];
+                let (mut weighted, mut weights) = (0.0f64, 0.0f64);
+                for j in bj * block..((bj + 1) * block).min(height) {
+                    let sin_theta = (PI * (j as f32 + 0.5) / height as f32).sin() as f64;
+                    for (bi, r) in row.iter_mut().enumerate() {
+                        for i in bi * block..((bi + 1) * block).min(width) {
+                            let y = luminance(map.texel(i as i64, j as i64));
+                            weighted += sin_theta * y as f64;
+                            weights += sin_theta;
+                            r.max = r.max.max(y);
+                            r.min = r.min.min(y);
+                            r.mean += y;
+                            counts[bi] += 1;
+                        }
+                    }
+                }
+                for (r, n) in row.iter_mut().zip(counts) {
+                    r.mean /= n as f32;
+                }
+                (row, weighted, weights)
+            })
+            .collect();
+        let weighted: f64 = rows.iter().map(|r| r.1).sum();
+        let weights: f64 = rows.iter().map(|r| r.2).sum();
+        let base: Vec<Range> = rows.into_iter().flat_map(|r| r.0).collect();
         let mut levels = vec![Level {
             width: base_width,
             height: base_height,

@@ -174,13 +174,13 @@ pub fn allocate<I: Intersector + Sync>(
             seconds: start.elapsed().as_secs_f64(),
         };
     };
-    let bounds = MapBounds::new(env.map());
-    let reference = bounds.sphere_mean.max(f32::MIN_POSITIVE);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(settings.threads.unwrap_or(0))
         .build()
         .expect("a thread pool");
     let pilots: Vec<Pilot> = pool.install(|| {
+        let bounds = MapBounds::new(env.map());
+        let reference = bounds.sphere_mean.max(f32::MIN_POSITIVE);
         (0..size.1)
             .into_par_iter()
             .flat_map_iter(|y| (0..size.0).map(move |x| (x, y)))
