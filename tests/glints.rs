@@ -15,8 +15,9 @@ use glam::Vec3;
 use pathtracer::bvh::BvhAccel;
 use pathtracer::cli::drivers::render_lighting_allocated;
 use pathtracer::environment::{EnvironmentLight, EnvironmentMap, EnvironmentSampling};
+use pathtracer::glints::pilot::chain_leaves;
 use pathtracer::glints::{allocate, Allocation, MAX_FACTOR};
-use pathtracer::intersect::Intersector;
+use pathtracer::intersect::{Intersector, Ray};
 use pathtracer::math::luminance;
 use pathtracer::raygen::Camera;
 use pathtracer::render::{pixel_ray, RenderSettings, Rendered};
@@ -251,4 +252,51 @@ fn glint_samples_change_the_variance_not_the_mean() {
     let (v0, v1) = (variance_where_more(&plain), variance_where_more(&allocated));
     eprintln!("variance over the pixels with more samples: without {v0:.4}, with {v1:.4}");
     assert!(v1 < 0.5 * v0, "{v1} against {v0}");
+}
+
+/// The pilot's chains: a camera ray straight at the mirror ball's top
+/// escapes once, reflected, with the mirror's weight; one at the floor
+/// ends there (a diffuse surface) without a leaf, and one at the sky
+/// has no bounce and no leaf; a glass ball forks: its leaves' weights
+/// sum to at most 1, and more than one leaf escapes.
+#[test]
+fn the_pilot_follows_mirror_and_glass_chains_to_the_sky() {
+    let scene = ball_on_a_floor();
+    let bvh = accel(&scene);
+    let world = world_under(&scene, &bvh, sun_map());
+    let from = Vec3::new(0.3, 3.0, 0.2);
+    let top = SPHERE_CENTER + Vec3::Y * SPHERE_RADIUS;
+    let ray = Ray::new(from, (top - from).normalize());
+    let leaves: Vec<_> = chain_leaves(&world, &ray, 5).iter().copied().collect();
+    assert_eq!(leaves.len(), 1, "{leaves:?}");
+    let n = Vec3::Y;
+    let reflected = ray.dir - 2.0 * ray.dir.dot(n) * n;
+    assert!(leaves[0].dir.dot(reflected) > 0.9999, "{:?}", leaves[0]);
+    assert!((leaves[0].weight - 1.0).abs() < 1e-5 && leaves[0].key == 0b10);
+    let floor = Ray::new(from, (Vec3::new(2.0, 0.0, 2.0) - from).normalize());
+    let on_floor = chain_leaves(&world, &floor, 5);
+    assert_eq!((on_floor.iter().count(), on_floor.scattered), (0, 1));
+    let sky = chain_leaves(&world, &Ray::new(from, Vec3::Y), 5);
+    assert_eq!((sky.iter().count(), sky.rays), (0, 1));
+
+    let mut b = SceneBuilder::new();
+    let glass = b.material(Material::Glass {
+        reflectance: Vec3::ONE,
+        transmittance: Vec3::ONE,
+        roughness: 0.0,
+        ior: 1.5,
+    });
+    b.sphere(SPHERE_CENTER, SPHERE_RADIUS, glass);
+    let glass_scene = b.finish();
+    let glass_bvh = accel(&glass_scene);
+    let glass_world = world_under(&glass_scene, &glass_bvh, sun_map());
+    let off_centre = SPHERE_CENTER + Vec3::new(0.2, 0.1, 0.0);
+    let ray = Ray::new(from, (off_centre - from).normalize());
+    let leaves = chain_leaves(&glass_world, &ray, 8);
+    let total: f32 = leaves.iter().map(|l| l.weight).sum();
+    eprintln!(
+        "glass: {} leaves, weights summing to {total}",
+        leaves.iter().count()
+    );
+    assert!(leaves.iter().count() > 1 && total <= 1.0 + 1e-4 && total > 0.5);
 }

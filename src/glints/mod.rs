@@ -22,16 +22,22 @@
 //! sigma_p^2 = sum over leaves of  a w^2 ((M - mu)(mu - m) + (1 - a) mu^2)
 //! ```
 //!
-//! Samples are then given in proportion to the standard deviation
-//! (Neyman 1934, "On the two different aspects of the representative
-//! method", *J. R. Stat. Soc.* 97: with `n_p` samples for a pixel of
-//! per-sample deviation `sigma_p`, `sum sigma_p^2 / n_p` for a fixed
-//! total is least when `n_p` is proportional to `sigma_p`): pixel `p`
-//! gets `spp k_p` samples, `k_p` the power of two at most
-//! `sigma_p / sigma_ref`, between 1 and `K`, with `sigma_ref` the map's
-//! mean luminance (the radiance scale of the rest of the image). `K`
-//! starts at 16 and is halved while the extra samples would be more than
-//! half of the render's.
+//! Samples then follow Neyman's allocation with costs (Neyman 1934, "On
+//! the two different aspects of the representative method", *J. R. Stat.
+//! Soc.* 97; Cochran, *Sampling Techniques*, 3rd ed., 1977, 5.5): for a
+//! fixed total cost `sum n_p c_p`, the variance `sum sigma_p^2 / n_p` is
+//! least when `n_p` is proportional to `sigma_p / sqrt(c_p)`. A sample's
+//! cost `c_p` is counted in rays ([`sample_cost`]). Pixel `p` gets
+//! `spp k_p` samples, `k_p` the power of two at most
+//!
+//! ```text
+//! (sigma_p / L_mean) sqrt(c_mean / c_p),   between 1 and K
+//! ```
+//!
+//! with `L_mean` the map's mean luminance over the sphere (the radiance
+//! scale of the rest of the image, whose pixels keep `spp`) and `c_mean`
+//! the mean cost. `K` starts at [`MAX_FACTOR`] and is halved while the
+//! extra samples would cost more than half of the render's.
 //!
 //! The allocation depends on the scene alone, not on any random number of
 //! the render, so each pixel's estimate is still the mean of independent
