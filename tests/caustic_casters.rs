@@ -16,7 +16,7 @@ mod common;
 
 use common::{
     accel, assert_means_agree, diffuse, estimate, ray_towards, rect_light, tracer, MeanEstimate,
-    SceneBuilder, ALPHA, LIGHTS,
+    SceneBuilder, ALPHA, GLASS, LIGHTS,
 };
 use glam::Vec3;
 use pathtracer::scene::{Material, Scene};
@@ -47,12 +47,7 @@ fn caustic_casters_change_the_variance_not_the_mean() {
     let mirror = b.material(Material::Mirror {
         reflectance: Vec3::ONE,
     });
-    let glass = b.material(Material::Glass {
-        reflectance: Vec3::ONE,
-        transmittance: Vec3::ONE,
-        roughness: 0.0,
-        ior: 1.5,
-    });
+    let glass = b.material(GLASS);
     let smooth = b.material(Material::Microfacet {
         alpha: 0.05,
         eta: Vec3::new(0.2, 0.9, 1.1),

@@ -28,7 +28,7 @@
 
 mod common;
 
-use common::{assert_mean_matches, MeanEstimate, SceneBuilder, ALPHA};
+use common::{assert_mean_matches, MeanEstimate, SceneBuilder, ALPHA, GLASS};
 
 use glam::Vec3;
 use pathtracer::bvh::BvhAccel;
@@ -215,15 +215,7 @@ fn mirror_and_glass_spheres_are_invisible_in_a_furnace() {
                 reflectance: Vec3::ONE,
             },
         ),
-        (
-            "glass sphere",
-            Material::Glass {
-                reflectance: Vec3::ONE,
-                transmittance: Vec3::ONE,
-                roughness: 0.0,
-                ior: 1.5,
-            },
-        ),
+        ("glass sphere", GLASS),
     ];
     for (object, material) in objects {
         let mut scene = furnace(albedo as f32, 1.0);

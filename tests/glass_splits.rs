@@ -17,22 +17,15 @@ mod common;
 
 use common::{
     accel, assert_means_agree, assert_means_agree_within, diffuse, estimate, ray_towards,
-    rect_light, tracer, tracer_with, SceneBuilder, ALPHA, LIGHTS,
+    rect_light, tracer, tracer_with, SceneBuilder, ALPHA, GLASS, LIGHTS,
 };
 use glam::Vec3;
 use pathtracer::environment::{EnvironmentLight, EnvironmentMap, EnvironmentSampling};
 use pathtracer::global::{PathTracer, Roulette, MAX_GLASS_SPLITS};
 use pathtracer::math::Rgb;
 use pathtracer::sampling::IndependentSampler;
-use pathtracer::scene::{Material, Scene};
+use pathtracer::scene::Scene;
 use pathtracer::world::World;
-
-const GLASS: Material = Material::Glass {
-    reflectance: Vec3::ONE,
-    transmittance: Vec3::ONE,
-    roughness: 0.0,
-    ior: 1.5,
-};
 
 const SPHERE_CENTER: Vec3 = Vec3::new(0.0, 0.4, 0.0);
 const SPHERE_RADIUS: f32 = 0.4;

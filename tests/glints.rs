@@ -10,7 +10,10 @@
 
 mod common;
 
-use common::{accel, assert_means_agree, diffuse, tracer, MeanEstimate, SceneBuilder, ALPHA};
+use common::{
+    accel, assert_means_agree, diffuse, image_mean, tracer, MeanEstimate, SceneBuilder, ALPHA,
+    GLASS,
+};
 use glam::Vec3;
 use pathtracer::bvh::BvhAccel;
 use pathtracer::cli::drivers::render_lighting_allocated;
@@ -198,15 +201,6 @@ fn render(world: &World<&BvhAccel>, allocation: Option<&Allocation>, seed: u64) 
     )
 }
 
-fn image_mean(r: &Rendered) -> f64 {
-    r.film
-        .pixels
-        .iter()
-        .map(|&p| luminance(p) as f64)
-        .sum::<f64>()
-        / r.film.pixels.len() as f64
-}
-
 /// Each pixel takes its factor times `-s` samples; over 40 seeds the
 /// image's mean luminance with and without glint samples agrees
 /// (two-sample z-test); and the variance over the seeds of the pixels
@@ -280,12 +274,7 @@ fn the_pilot_follows_mirror_and_glass_chains_to_the_sky() {
     assert_eq!((sky.iter().count(), sky.rays), (0, 1));
 
     let mut b = SceneBuilder::new();
-    let glass = b.material(Material::Glass {
-        reflectance: Vec3::ONE,
-        transmittance: Vec3::ONE,
-        roughness: 0.0,
-        ior: 1.5,
-    });
+    let glass = b.material(GLASS);
     b.sphere(SPHERE_CENTER, SPHERE_RADIUS, glass);
     let glass_scene = b.finish();
     let glass_bvh = accel(&glass_scene);

@@ -166,12 +166,7 @@ fn no_total_internal_reflection_darkens_a_glass_block() {
     let mut b = SceneBuilder::new();
     let floor = b.material(diffuse(0.5));
     b.floor(floor, 3.0);
-    let glass = b.material(Material::Glass {
-        reflectance: Vec3::ONE,
-        transmittance: Vec3::ONE,
-        roughness: 0.0,
-        ior: 1.5,
-    });
+    let glass = b.material(GLASS);
     b.closed_box(glass, Vec3::new(-0.5, 0.01, -0.5), Vec3::new(0.5, 1.0, 0.5));
     b.light(rect_light(
         6.0,
@@ -217,12 +212,7 @@ fn no_total_internal_reflection_darkens_a_glass_block() {
 #[test]
 fn schlick_r0_not_squared_reflects_five_times_as_much() {
     let mut b = SceneBuilder::new();
-    let glass = b.material(Material::Glass {
-        reflectance: Vec3::ONE,
-        transmittance: Vec3::ONE,
-        roughness: 0.0,
-        ior: 1.5,
-    });
+    let glass = b.material(GLASS);
     b.floor(glass, 1.0);
     let lamp = b.material(Material::Emission {
         radiance: Vec3::splat(5.0),

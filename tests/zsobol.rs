@@ -9,7 +9,7 @@
 
 mod common;
 
-use common::{assert_means_agree, chi_square, MeanEstimate, ALPHA};
+use common::{assert_means_agree, chi_square, image_mean, MeanEstimate, ALPHA};
 use pathtracer::cli::drivers::render_lighting;
 use pathtracer::direct::DirectLights;
 use pathtracer::global::{DirectStrategy, PathTracer, Roulette};
@@ -243,15 +243,6 @@ impl CornellRenders {
         };
         render_lighting(&world, &tracer, &self.camera, &settings, None)
     }
-}
-
-fn image_mean(r: &Rendered) -> f64 {
-    r.film
-        .pixels
-        .iter()
-        .map(|&p| luminance(p) as f64)
-        .sum::<f64>()
-        / r.film.pixels.len() as f64
 }
 
 /// The mean luminance of 32 x 24 Cornell box renders at 16 samples, over

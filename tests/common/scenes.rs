@@ -68,6 +68,24 @@ pub fn diffuse(albedo: f32) -> Material {
     }
 }
 
+/// Clear glass of index 1.5 that reflects and refracts.
+pub const GLASS: Material = Material::Glass {
+    reflectance: Vec3::ONE,
+    transmittance: Vec3::ONE,
+    roughness: 0.0,
+    ior: 1.5,
+};
+
+/// The mean luminance of a render's pixels.
+pub fn image_mean(r: &pathtracer::render::Rendered) -> f64 {
+    r.film
+        .pixels
+        .iter()
+        .map(|&p| luminance(p) as f64)
+        .sum::<f64>()
+        / r.film.pixels.len() as f64
+}
+
 /// A grey emitter that reflects nothing.
 pub fn emission(radiance: f32) -> Material {
     Material::Emission {
