@@ -1,8 +1,6 @@
 //! The binaries as a user meets them: errors on bad input name the file and
 //! exit non-zero without a panic; an output file is written whole or not at all.
 
-mod common;
-
 use std::process::Command;
 
 fn run(binary: &str, args: &[&str]) -> (bool, String, String) {
@@ -249,44 +247,6 @@ fn info_names_the_sampler_the_roulette_and_the_glass_splits() {
             "{refused:?}: {stderr}"
         );
     }
-}
-
-/// `--info` says whether glint samples are on: on for a mirror ball under
-/// the built-in sky (`part7-environment` with a scene of the project's
-/// own), off with `--glints off` or `--course`, and for the default box
-/// (no map); `--course --glints off` is refused as a conflict.
-#[test]
-fn info_names_the_glint_samples() {
-    let part7 = env!("CARGO_BIN_EXE_part7-environment");
-    let dir = tempfile::tempdir().unwrap();
-    let scene = dir.path().join("mirror_ball.dae");
-    // The test scene with its red material (the ball's) a mirror.
-    let mirror = common::corrupt(
-        "<technique sid=\"common\"><lambert>\n      <diffuse><color>0.7 0.1 0.1 1</color></diffuse></lambert></technique></profile_COMMON>",
-        "</profile_COMMON><extra><technique profile=\"CGL\"><mirror><reflectance>1 1 1</reflectance></mirror></technique></extra>",
-    );
-    std::fs::write(&scene, mirror).unwrap();
-    let scene = scene.to_str().unwrap();
-    let glints = |binary: &str, flags: &[&str]| {
-        let mut args = vec!["--info"];
-        args.extend(flags);
-        let (ok, stdout, stderr) = run(binary, &args);
-        assert!(ok, "{flags:?}: {stderr}");
-        stdout
-            .lines()
-            .find_map(|l| l.strip_prefix("plan: glint samples: "))
-            .unwrap_or_else(|| panic!("no glint samples line in {stdout}"))
-            .split(' ')
-            .next()
-            .unwrap()
-            .to_string()
-    };
-    assert_eq!(glints(part7, &[scene]), "on:");
-    assert_eq!(glints(part7, &["--glints", "off", scene]), "off");
-    assert_eq!(glints(part7, &["--course", scene]), "off");
-    assert_eq!(glints(PATHTRACER, &[]), "off");
-    let (ok, _, stderr) = run(part7, &["--info", "--course", "--glints", "off", scene]);
-    assert!(!ok && stderr.contains("--glints"), "{stderr}");
 }
 
 /// `--course-exact` names its assignment and its adaptive sampling: 3-2

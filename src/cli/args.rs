@@ -234,9 +234,9 @@ pub struct CourseArgs {
     /// Glint samples: the pixels whose chains of mirror and glass bounces
     /// may see a small, bright part of the environment map (a sun) take
     /// up to 16 times -s samples, as a pilot of rays before the render
-    /// decides, at most half again the render's samples (`auto`, the
-    /// default, where the scene has a map and mirror or glass), or every
-    /// pixel -s (`off`, the course's).
+    /// decides, at most half again the render's cost (`auto`, the default,
+    /// where the scene has a map and mirror or glass, from -s 16 and
+    /// without -a), or every pixel -s (`off`, the course's).
     #[arg(long, value_enum, value_name = "RULE", default_value_t = GlintsArg::Auto)]
     pub glints: GlintsArg,
 

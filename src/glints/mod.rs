@@ -28,7 +28,7 @@
 //! fixed total cost `sum n_p c_p`, the variance `sum sigma_p^2 / n_p` is
 //! least when `n_p` is proportional to `sigma_p / sqrt(c_p)`. A sample's
 //! cost `c_p` is counted in rays ([`sample_cost`]). Pixel `p` gets
-//! `spp k_p` samples, `k_p` the power of two at most
+//! `spp k_p` samples, `k_p` the power of four at most
 //!
 //! ```text
 //! (sigma_p / L_mean) sqrt(c_mean / c_p),   between 1 and K
@@ -36,8 +36,10 @@
 //!
 //! with `L_mean` the map's mean luminance over the sphere (the radiance
 //! scale of the rest of the image, whose pixels keep `spp`) and `c_mean`
-//! the mean cost. `K` starts at [`MAX_FACTOR`] and is halved while the
-//! extra samples would cost more than half of the render's.
+//! the mean cost. `K` starts at [`MAX_FACTOR`] (less where ZSobol's
+//! 32-bit index would not hold it: [`factor_fitting`]) and is divided by
+//! 4 while the extra samples would cost more than half of the render's.
+//! Powers of four keep ZSobol's nets ([`factors`]).
 //!
 //! The allocation depends on the scene alone, not on any random number of
 //! the render, so each pixel's estimate is still the mean of independent
@@ -49,6 +51,8 @@ pub mod bounds;
 pub mod pilot;
 
 use std::time::Instant;
+
+use std::f32::consts::PI;
 
 use glam::{Vec2, Vec3};
 use rayon::prelude::*;
@@ -65,8 +69,10 @@ use pilot::{chain_leaves, Leaves};
 pub const MAX_FACTOR: u32 = 16;
 
 /// The fewest samples a pixel (`-s`) at which the plan runs the pilot:
-/// its five chains a pixel cost about 3 % of a 64-sample render of the
-/// mirror bunny under a sun, so about 12 % at 16 samples, and more below.
+/// at 480 x 360 it took 0.15 s of a 64-sample render of the mirror bunny
+/// under a sun (3.5 s without it), about 4 %; the chains' part of it
+/// grows as `-s` falls (the map's pyramid, 50 to 75 ms for a 4k map, is
+/// a fixed cost).
 pub const MIN_SAMPLES: u32 = 16;
 
 /// The pixel offsets of the pilot's rays: the centre and the corners.
@@ -136,9 +142,12 @@ impl Decision {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Allocation {
     /// Each pixel's factor on `-s`, row by row (row 0 at the top): a power
-    /// of two from 1 to `largest`.
+    /// of four from 1 to `largest`.
     pub factors: Vec<u32>,
     pub largest: u32,
+    /// What the extra samples cost, as a fraction of the render's without
+    /// them, by the pilot's count ([`sample_cost`]): at most 1/2.
+    pub extra_cost: f64,
     /// Seconds the pilot took.
     pub seconds: f64,
 }
@@ -177,6 +186,7 @@ pub fn allocate<I: Intersector + Sync>(
         return Allocation {
             factors: vec![1; pixels],
             largest: 1,
+            extra_cost: 0.0,
             seconds: start.elapsed().as_secs_f64(),
         };
     };
@@ -202,10 +212,12 @@ pub fn allocate<I: Intersector + Sync>(
             })
             .collect()
     });
-    let (factors, largest) = factors(&pilots);
+    let cap = factor_fitting(size, settings.samples_per_pixel);
+    let (factors, largest, extra_cost) = factors(&pilots, cap);
     Allocation {
         factors,
         largest,
+        extra_cost,
         seconds: start.elapsed().as_secs_f64(),
     }
 }
@@ -231,33 +243,57 @@ pub fn sample_cost(chain: &Leaves) -> f32 {
 }
 
 /// The factors for the pixels the pilot saw: by Neyman's allocation with
-/// costs (`n_p` proportional to `sigma_p / sqrt(c_p)`), the power of two
+/// costs (`n_p` proportional to `sigma_p / sqrt(c_p)`), the power of four
 /// at most `ratio sqrt(c_mean / c_p)`, from 1 to a cap that starts at
-/// [`MAX_FACTOR`] and halves while the extra samples would cost more than
-/// half of the render's samples. Returns them and the largest.
-pub fn factors(pilots: &[Pilot]) -> (Vec<u32>, u32) {
+/// `max_factor` (a power of four) and is divided by 4 while the extra
+/// samples would cost more than half of the render's. Powers of four
+/// keep each pixel's samples a (0, m, 2)-net: ZSobol shuffles base-4
+/// digits, so a pixel's first `2^j` of `2^L` samples are an aligned block
+/// only when `L - j` is even. Returns them, the largest and the extra
+/// cost as a fraction of the render's without them.
+pub fn factors(pilots: &[Pilot], max_factor: u32) -> (Vec<u32>, u32, f64) {
     let total: f64 = pilots.iter().map(|p| p.cost as f64).sum();
     let mean_cost = (total / pilots.len().max(1) as f64) as f32;
     let factor = |p: &Pilot, cap: u32| -> u32 {
         let wanted = p.ratio * (mean_cost / p.cost.max(1.0)).sqrt();
         // `max` takes a NaN to 1.
         let k = wanted.max(1.0).min(cap as f32) as u32;
-        1 << (31 - k.leading_zeros())
+        // The power of four at most k.
+        1 << ((31 - k.leading_zeros()) & !1)
     };
-    let mut cap = MAX_FACTOR;
-    while cap > 1 {
-        let extra: f64 = pilots
+    let extra_cost = |cap: u32| -> f64 {
+        pilots
             .iter()
             .map(|p| (factor(p, cap) - 1) as f64 * p.cost as f64)
-            .sum();
-        if 2.0 * extra <= total {
-            break;
-        }
-        cap /= 2;
+            .sum()
+    };
+    let mut cap = max_factor;
+    while cap > 1 && 2.0 * extra_cost(cap) > total {
+        cap /= 4;
     }
     let factors: Vec<u32> = pilots.iter().map(|p| factor(p, cap)).collect();
     let largest = factors.iter().copied().max().unwrap_or(1);
-    (factors, largest)
+    (
+        factors,
+        largest,
+        extra_cost(cap) / total.max(f64::MIN_POSITIVE),
+    )
+}
+
+/// The largest factor a render of `size` at `spp` samples may take: ZSobol
+/// indexes a sample by 32 bits, `2 R` for the pixel (the image side
+/// rounded up to `2^R`) and `L` for the sample (`spp` rounded up to `2^L`),
+/// and the factor's bits must fit beside them.
+pub fn factor_fitting(size: (u32, u32), spp: u32) -> u32 {
+    let side = size
+        .0
+        .max(size.1)
+        .max(1)
+        .next_power_of_two()
+        .trailing_zeros();
+    let sample = spp.max(1).next_power_of_two().trailing_zeros();
+    let free = 32u32.saturating_sub(2 * side + sample) & !1;
+    MAX_FACTOR.min(1 << free.min(31))
 }
 
 /// The bound `sigma_p` on a pixel's per-sample deviation from the leaves
@@ -279,11 +315,11 @@ fn pixel_deviation(chains: &[Leaves], bounds: &MapBounds) -> f32 {
                     .filter_map(|c| c.iter().find(|l| l.key == leaf.key))
             };
             let mean = same().map(|l| l.dir).sum::<Vec3>().normalize_or_zero();
-            if mean == Vec3::ZERO {
-                continue;
-            }
             let seen_by = same().count();
-            let radius = if seen_by == 1 {
+            let radius = if mean == Vec3::ZERO {
+                // Directions that cancel: the whole sphere.
+                PI
+            } else if seen_by == 1 {
                 LONE_LEAF_RADIUS
             } else {
                 same()
@@ -291,7 +327,7 @@ fn pixel_deviation(chains: &[Leaves], bounds: &MapBounds) -> f32 {
                     .fold(0.0, f32::max)
             };
             let weight = same().map(|l| l.weight).fold(0.0, f32::max);
-            let range = bounds.over_disk(mean, radius);
+            let range = bounds.over_disk(if mean == Vec3::ZERO { leaf.dir } else { mean }, radius);
             let a = seen_by as f32 / chains.len() as f32;
             variance += a
                 * weight

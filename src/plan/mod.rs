@@ -9,7 +9,7 @@
 //! | lens | `-b > 0` | the lens sample and its disk warp per camera ray |
 //! | environment samples ([`light_samples`]) | an environment map lights the scene and `-l` is not given | nothing: four samples of the map instead of one at a vertex whose BSDF is no sharper than the map (and not diffuse in a scene that casts caustics), less noise per second |
 //! | glass splits | glass (that reflects and refracts) in the scene, and not `--course` | nothing: it costs time, to lower the noise more: at the first [`GLASS_SPLITS`] glass vertices of the camera's chain of delta bounces the path follows both lobes instead of a coin's choice, more paths and less noise where the lobe the coin rarely takes sees a light |
-//! | glint samples ([`crate::glints`]) | an environment map, a mirror or glass, a pinhole camera, and not `--glints off` or `--course` | nothing: a pilot of five rays a pixel, then more samples (up to 16 times `-s`) for the pixels whose chains of mirror and glass bounces may see a small bright part of the map, at most half again the render's samples |
+//! | glint samples ([`crate::glints`]) | an environment map, a mirror or glass, a pinhole camera, and not `--glints off` or `--course` | nothing: a pilot of five rays a pixel, then more samples (up to 16 times `-s`) for the pixels whose chains of mirror and glass bounces may see a small bright part of the map, at most half again the render's cost; from `-s 16`, not with `-a` |
 //! | caustic casters | a mirror, glass or smooth conductor sphere, or a mirror-like mesh (and not `--casters off`) | nothing: it adds a sampling strategy where a scene has caustics, and costs nothing where it has none |
 //!
 //! Specialising changes no expectation: the plan only drops work whose

@@ -176,20 +176,28 @@ pub fn render_image(
 /// [`render_image`] with pixel `(x, y)` taking `factors[y * width + x]`
 /// times `settings.samples_per_pixel` samples (`None`: once); the sampler
 /// is built for the largest factor.
+///
+/// # Panics
+///
+/// If `factors` has not one factor a pixel.
 pub fn render_image_with_factors(
     camera: &Camera,
     settings: &RenderSettings,
-    factors: Option<(&[u32], u32)>,
+    factors: Option<&[u32]>,
     adaptive: Option<Adaptive>,
     radiance: impl Fn(&Ray, &mut PixelSampler) -> Rgb + Sync,
 ) -> Rendered {
     let size = (settings.width, settings.height);
+    if let Some(f) = factors {
+        assert_eq!(f.len(), (size.0 * size.1) as usize, "one factor a pixel");
+    }
+    let largest = factors.and_then(|f| f.iter().copied().max()).unwrap_or(1);
     let sampler_settings = RenderSettings {
-        samples_per_pixel: settings.samples_per_pixel * factors.map_or(1, |f| f.1),
+        samples_per_pixel: settings.samples_per_pixel * largest,
         ..*settings
     };
     let (estimates, stats) = render_tiles(&sampler_settings, |x, y, sampler| {
-        let factor = factors.map_or(1, |(f, _)| f[(y * size.0 + x) as usize]);
+        let factor = factors.map_or(1, |f| f[(y * size.0 + x) as usize]);
         estimate_pixel(
             camera,
             size,
@@ -209,15 +217,17 @@ mod tests {
     use crate::sampling::SamplerKind;
     use std::sync::Mutex;
 
-    /// A pixel with factor 4 at 4 samples takes 16, and with ZSobol their
-    /// numbers in a dimension pair are a (0, 4, 2)-net: each of the 16
-    /// elementary boxes `2^-a x 2^-(4-a)` holds one. (With the sampler
-    /// built for 4 samples instead of 16, samples 4 to 15 would be other
-    /// pixels' points, and the boxes would not each hold one.)
+    /// Pixels with factors 1, 4 and 16 at 4 samples take 4, 16 and 64,
+    /// and with ZSobol (built for 64) each pixel's numbers in a dimension
+    /// pair are a (0, m, 2)-net: each of the `2^m` elementary boxes
+    /// `2^-a x 2^-(m-a)` holds one. Checked by hand: with the sampler
+    /// built for 4 samples (samples past 4 are other pixels' points), and
+    /// with factors 1, 2 and 8 (an odd number of base-4 digits between a
+    /// pixel's count and the sampler's), boxes hold two or none.
     #[test]
     fn a_pixels_factor_multiplies_its_samples_which_stay_a_net() {
         let settings = RenderSettings {
-            width: 2,
+            width: 3,
             height: 1,
             samples_per_pixel: 4,
             threads: Some(1),
@@ -225,32 +235,34 @@ mod tests {
             sampler: SamplerKind::ZSobol,
             progress: false,
         };
-        let camera = Camera::look_at(glam::Vec3::Z, glam::Vec3::ZERO, glam::Vec3::Y, 40.0, 30.0);
-        let points = Mutex::new(Vec::new());
-        let rendered = render_image_with_factors(
-            &camera,
-            &settings,
-            Some((&[1, 4], 4)),
-            None,
-            |ray, sampler| {
-                if ray.dir.x > 0.0 {
-                    points.lock().unwrap().push(sampler.get_2d());
-                }
+        let camera = Camera::look_at(glam::Vec3::Z, glam::Vec3::ZERO, glam::Vec3::Y, 60.0, 20.0);
+        let points = Mutex::new(vec![Vec::new(); 3]);
+        let factors = [1, 4, 16];
+        let rendered =
+            render_image_with_factors(&camera, &settings, Some(&factors), None, |ray, sampler| {
+                // The pixel from the ray's direction: thirds of the field.
+                let x = ray.dir.x / -ray.dir.z / (30f32.to_radians().tan());
+                let pixel = ((x + 1.0) * 1.5).clamp(0.0, 2.0) as usize;
+                points.lock().unwrap()[pixel].push(sampler.get_2d());
                 Rgb::ONE
-            },
-        );
+            });
         let samples: Vec<u32> = rendered.estimates.iter().map(|e| e.samples).collect();
-        assert_eq!(samples, [4, 16]);
-        let points = points.into_inner().unwrap();
-        assert_eq!(points.len(), 16);
-        for a in 0..=4 {
-            let (nx, ny) = (1u32 << a, 1u32 << (4 - a));
-            let mut boxes = vec![0; 16];
-            for p in &points {
-                let (i, j) = ((p.x * nx as f32) as u32, (p.y * ny as f32) as u32);
-                boxes[(j * nx + i) as usize] += 1;
+        assert_eq!(samples, [4, 16, 64]);
+        for (pixel, points) in points.into_inner().unwrap().iter().enumerate() {
+            let m = points.len().trailing_zeros();
+            assert_eq!(points.len(), 4 * factors[pixel] as usize);
+            for a in 0..=m {
+                let (nx, ny) = (1u32 << a, 1u32 << (m - a));
+                let mut boxes = vec![0; points.len()];
+                for p in points {
+                    let (i, j) = ((p.x * nx as f32) as u32, (p.y * ny as f32) as u32);
+                    boxes[(j * nx + i) as usize] += 1;
+                }
+                assert!(
+                    boxes.iter().all(|&n| n == 1),
+                    "pixel {pixel}, {nx} x {ny}: {boxes:?}"
+                );
             }
-            assert!(boxes.iter().all(|&n| n == 1), "{nx} x {ny}: {boxes:?}");
         }
     }
 

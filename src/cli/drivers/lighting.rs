@@ -49,7 +49,7 @@ pub fn render_lighting_allocated<I: Intersector>(
     adaptive: Option<Adaptive>,
     allocation: Option<&Allocation>,
 ) -> Rendered {
-    let factors = allocation.map(|a| (a.factors.as_slice(), a.largest));
+    let factors = allocation.map(|a| a.factors.as_slice());
     let mut rendered =
         render_image_with_factors(camera, settings, factors, adaptive, |ray, rng| {
             tracer.radiance(world, ray, rng)
@@ -182,10 +182,11 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
     let allocation = glints.then(|| allocate(&world, &camera, &settings, tracer.max_depth));
     if let Some(a) = &allocation {
         crate::say_err!(
-            "glints: {} pixels take more samples (up to {} times -s), {:.2} % more samples in all; pilot {:.3} s (in the render's time)",
+            "glints: {} pixels take more samples (up to {} times -s), {:.2} % more samples in all ({:.1} % more rays by the pilot's count); pilot {:.3} s (in the render's time)",
             a.pixels_above_one(),
             a.largest,
             100.0 * a.extra_fraction(),
+            100.0 * a.extra_cost,
             a.seconds
         );
     }
