@@ -311,8 +311,9 @@ fn run(binary: &str, args: &[&str]) -> (bool, String, String) {
 
 /// `--info` says whether glint samples are on: on for a mirror ball under
 /// the built-in sky (`part7-environment` with a scene of the project's
-/// own), off with `--glints off` or `--course`, and for the default box
-/// (no map); `--course --glints off` is refused as a conflict.
+/// own) at `-s 16`, off at the default `-s 1`, with `--glints off` or
+/// `--course`, and for the default box (no map) (`-a` is the plan's
+/// test's: `part7-environment` has no adaptive sampling); `--course --glints off` is refused as a conflict.
 #[test]
 fn info_names_the_glint_samples() {
     let part7 = env!("CARGO_BIN_EXE_part7-environment");
@@ -339,9 +340,14 @@ fn info_names_the_glint_samples() {
             .unwrap()
             .to_string()
     };
-    assert_eq!(glints(part7, &[scene]), "on:");
-    assert_eq!(glints(part7, &["--glints", "off", scene]), "off");
-    assert_eq!(glints(part7, &["--course", scene]), "off");
+    assert_eq!(glints(part7, &["-s", "16", scene]), "on:");
+    // The default -s 1: off, the pilot would cost more than it buys.
+    assert_eq!(glints(part7, &[scene]), "off");
+    assert_eq!(
+        glints(part7, &["-s", "16", "--glints", "off", scene]),
+        "off"
+    );
+    assert_eq!(glints(part7, &["-s", "16", "--course", scene]), "off");
     assert_eq!(glints(env!("CARGO_BIN_EXE_pathtracer"), &[]), "off");
     let (ok, _, stderr) = run(part7, &["--info", "--course", "--glints", "off", scene]);
     assert!(!ok && stderr.contains("--glints"), "{stderr}");

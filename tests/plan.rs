@@ -9,6 +9,7 @@ use common::*;
 use glam::Vec3;
 use pathtracer::depth_of_field::ThinLens;
 use pathtracer::environment::{EnvironmentLight, EnvironmentMap, EnvironmentSampling};
+use pathtracer::glints::Decision;
 use pathtracer::global::GLASS_SPLITS;
 use pathtracer::lights::{LightConvention, LightSet};
 use pathtracer::plan::Plan;
@@ -245,7 +246,21 @@ fn the_plan_samples_glints_where_a_map_lights_mirror_or_glass() {
             "no mirror or glass",
         ),
         (plan(&materials_box(), true, &lens), "a thin lens"),
-        (on.clone().with_glints(false), "--glints off"),
+        (
+            on.clone()
+                .with_glints(Decision::off_by_flags(false, 64, false)),
+            "--glints off",
+        ),
+        (
+            on.clone()
+                .with_glints(Decision::off_by_flags(true, 8, false)),
+            "-s below 16",
+        ),
+        (
+            on.clone()
+                .with_glints(Decision::off_by_flags(true, 64, true)),
+            "-a",
+        ),
     ] {
         assert!(!plan.glints, "{}", line(&plan));
         assert!(
@@ -254,5 +269,8 @@ fn the_plan_samples_glints_where_a_map_lights_mirror_or_glass() {
             line(&plan)
         );
     }
-    assert!(on.with_glints(true).glints);
+    assert!(
+        on.with_glints(Decision::off_by_flags(true, 16, false))
+            .glints
+    );
 }

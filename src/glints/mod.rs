@@ -100,6 +100,10 @@ pub enum Decision {
     Lens,
     /// Turned off by a flag.
     Asked,
+    /// `-s` below [`MIN_SAMPLES`].
+    FewSamples,
+    /// `-a`: the course's adaptive sampling decides each pixel's samples.
+    Adaptive,
 }
 
 impl Decision {
@@ -114,6 +118,21 @@ impl Decision {
         }
     }
 
+    /// Why the flags turn glint samples off, if they do: `allowed`
+    /// false (`--glints off`, `--course`, `--no-plan`), `-s` below
+    /// [`MIN_SAMPLES`], or adaptive sampling.
+    pub fn off_by_flags(allowed: bool, samples_per_pixel: u32, adaptive: bool) -> Option<Self> {
+        if !allowed {
+            Some(Decision::Asked)
+        } else if samples_per_pixel < MIN_SAMPLES {
+            Some(Decision::FewSamples)
+        } else if adaptive {
+            Some(Decision::Adaptive)
+        } else {
+            None
+        }
+    }
+
     pub fn on(self) -> bool {
         self == Decision::On
     }
@@ -124,8 +143,7 @@ impl Decision {
                 return format!(
                     "{LINE} on: pixels whose chains of mirror and glass bounces may see a small, \
                      bright part of the map take up to {MAX_FACTOR} times -s samples (a pilot of \
-                     {} rays a pixel decides; at most half again the render's cost; with -s \
-                     {MIN_SAMPLES} or more and without -a)",
+                     {} rays a pixel decides; at most half again the render's cost)",
                     PILOT_OFFSETS.len()
                 )
             }
@@ -133,6 +151,12 @@ impl Decision {
             Decision::NoDelta => "no mirror or glass",
             Decision::Lens => "a thin lens: the pilot traces pinhole rays",
             Decision::Asked => "--glints off, --course or --no-plan",
+            Decision::FewSamples => {
+                return format!(
+                    "{LINE} off (-s below {MIN_SAMPLES}: the pilot would cost a large part of the render): every pixel takes -s samples"
+                )
+            }
+            Decision::Adaptive => "-a: adaptive sampling decides each pixel's samples",
         };
         format!("{LINE} off ({why}): every pixel takes -s samples")
     }

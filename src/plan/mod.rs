@@ -249,13 +249,13 @@ impl Plan {
         }
     }
 
-    /// The plan without glint samples where the flags turn them off
-    /// (`--glints off`, `--course`).
-    pub fn with_glints(mut self, allowed: bool) -> Self {
-        if self.glints && !allowed {
+    /// The plan without glint samples where the flags turn them off, and
+    /// why (`off`: [`glints::Decision::off_by_flags`]).
+    pub fn with_glints(mut self, off: Option<glints::Decision>) -> Self {
+        if let (true, Some(why)) = (self.glints, off) {
             self.glints = false;
             if let Some(old) = self.lines.iter_mut().find(|l| l.starts_with(glints::LINE)) {
-                *old = glints::Decision::Asked.line();
+                *old = why.line();
             }
         }
         self

@@ -12,7 +12,7 @@ use crate::environment::{
     builtin_sky, EnvironmentError, EnvironmentLight, EnvironmentMap, EnvironmentSampling,
     EnvironmentWeights,
 };
-use crate::glints::{allocate, Allocation, MIN_SAMPLES};
+use crate::glints::{allocate, Allocation, Decision};
 use crate::global::{DirectStrategy, PathTracer, Roulette};
 use crate::intersect::Intersector;
 use crate::lights::LightSet;
@@ -133,6 +133,11 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
         }
     }
     let part = part(&scene)?;
+    let glints_off = Decision::off_by_flags(
+        args.glints() && !args.no_plan,
+        args.render_settings().samples_per_pixel,
+        part.adaptive.is_some(),
+    );
     if args.info {
         crate::cli::say::text(&describe(&scene, &camera))?;
         let mut lights = LightSet::new(&scene, args.world_options().light_convention);
@@ -143,7 +148,7 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
             .with_sampler(args.sampler_kind())
             .with_casters(&Casters::new(&scene, &lights, args.world_options().casters))
             .with_glass_splits(args.glass_splits())
-            .with_glints(args.glints() && !args.no_plan);
+            .with_glints(glints_off);
         for line in &plan.lines {
             crate::say!("{line}")?;
         }
@@ -164,7 +169,7 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
         World::with_options(&scene, &accel, args.world_options()).with_environment(environment);
     let plan = Plan::new(&scene, &world.lights, &part.tracer, &camera.lens)
         .with_glass_splits(args.glass_splits())
-        .with_glints(args.glints() && !args.no_plan);
+        .with_glints(glints_off);
     for warning in &plan.warnings {
         crate::say_err!("warning: {}: {warning}", scene.source);
     }
@@ -177,9 +182,9 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
         }
     };
     let settings = args.render_settings();
-    let glints =
-        plan.glints && settings.samples_per_pixel >= MIN_SAMPLES && part.adaptive.is_none();
-    let allocation = glints.then(|| allocate(&world, &camera, &settings, tracer.max_depth));
+    let allocation = plan
+        .glints
+        .then(|| allocate(&world, &camera, &settings, tracer.max_depth));
     if let Some(a) = &allocation {
         crate::say_err!(
             "glints: {} pixels take more samples (up to {} times -s), {:.2} % more samples in all ({:.1} % more rays by the pilot's count); pilot {:.3} s (in the render's time)",
