@@ -148,7 +148,7 @@ fn samples_go_to_the_glint_and_only_there() {
         "glint pixel ({gx}, {gy}): factor {}; {} pixels above 1, largest {}, extra {:.3}",
         at(gx, gy),
         a.pixels_above_one(),
-        a.largest,
+        a.largest(),
         a.extra_fraction()
     );
     assert!(at(gx, gy) > 1, "the glint's pixel takes {}", at(gx, gy));
@@ -177,9 +177,9 @@ fn samples_go_to_the_glint_and_only_there() {
         &settings(16, 0),
         5,
     );
-    assert_eq!((uniform.largest, uniform.pixels_above_one()), (1, 0));
+    assert_eq!((uniform.largest(), uniform.pixels_above_one()), (1, 0));
     let dark = allocate(&World::new(&scene, &bvh), &camera(), &settings(16, 0), 5);
-    assert_eq!((dark.largest, dark.pixels_above_one()), (1, 0));
+    assert_eq!((dark.largest(), dark.pixels_above_one()), (1, 0));
 }
 
 fn render(world: &World<&BvhAccel>, allocation: Option<&Allocation>, seed: u64) -> Rendered {

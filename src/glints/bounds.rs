@@ -32,6 +32,13 @@ pub struct Range {
 }
 
 impl Range {
+    /// The range of no values, which any value widens.
+    const EMPTY: Range = Range {
+        max: f32::NEG_INFINITY,
+        min: f32::INFINITY,
+        mean: 0.0,
+    };
+
     /// The Bhatia–Davis bound on the variance of a quantity in
     /// `[min, max]` with mean `mean`.
     pub fn variance_bound(&self) -> f32 {
@@ -39,11 +46,7 @@ impl Range {
     }
 
     fn of(values: impl Iterator<Item = Range>) -> Range {
-        let mut out = Range {
-            max: f32::NEG_INFINITY,
-            min: f32::INFINITY,
-            mean: 0.0,
-        };
+        let mut out = Range::EMPTY;
         let mut n = 0u32;
         for v in values {
             out.max = out.max.max(v.max);
@@ -100,14 +103,7 @@ impl MapBounds {
         let rows: Vec<(Vec<Range>, f64, f64)> = (0..base_height)
             .into_par_iter()
             .map(|bj| {
-                let mut row = vec![
-                    Range {
-                        max: f32::NEG_INFINITY,
-                        min: f32::INFINITY,
-                        mean: 0.0,
-                    };
-                    base_width
-                ];
+                let mut row = vec![Range::EMPTY; base_width];
                 let mut counts = vec![0u32; base_width];
                 let (mut weighted, mut weights) = (0.0f64, 0.0f64);
                 for j in bj * block..((bj + 1) * block).min(height) {

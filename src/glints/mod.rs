@@ -60,6 +60,7 @@ use rayon::prelude::*;
 use crate::intersect::Intersector;
 use crate::lights::Light;
 use crate::raygen::Camera;
+use crate::render::tiles::thread_pool;
 use crate::render::{pixel_ray, RenderSettings};
 use crate::world::World;
 use bounds::MapBounds;
@@ -166,9 +167,8 @@ impl Decision {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Allocation {
     /// Each pixel's factor on `-s`, row by row (row 0 at the top): a power
-    /// of four from 1 to `largest`.
+    /// of four from 1 to [`MAX_FACTOR`].
     pub factors: Vec<u32>,
-    pub largest: u32,
     /// What the extra samples cost, as a fraction of the render's without
     /// them, by the pilot's count ([`sample_cost`]): at most 1/2.
     pub extra_cost: f64,
@@ -177,6 +177,11 @@ pub struct Allocation {
 }
 
 impl Allocation {
+    /// The largest factor (1 with no pixels).
+    pub fn largest(&self) -> u32 {
+        self.factors.iter().copied().max().unwrap_or(1)
+    }
+
     /// Pixels that take more than `-s` samples.
     pub fn pixels_above_one(&self) -> usize {
         self.factors.iter().filter(|&&k| k > 1).count()
@@ -209,16 +214,11 @@ pub fn allocate<I: Intersector + Sync>(
     let Some(env) = env else {
         return Allocation {
             factors: vec![1; pixels],
-            largest: 1,
             extra_cost: 0.0,
             seconds: start.elapsed().as_secs_f64(),
         };
     };
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(settings.threads.unwrap_or(0))
-        .build()
-        .expect("a thread pool");
-    let pilots: Vec<Pilot> = pool.install(|| {
+    let pilots: Vec<Pilot> = thread_pool(settings).install(|| {
         let bounds = MapBounds::new(env.map());
         let reference = bounds.sphere_mean.max(f32::MIN_POSITIVE);
         (0..size.1)
@@ -237,10 +237,9 @@ pub fn allocate<I: Intersector + Sync>(
             .collect()
     });
     let cap = factor_fitting(size, settings.samples_per_pixel);
-    let (factors, largest, extra_cost) = factors(&pilots, cap);
+    let (factors, extra_cost) = factors(&pilots, cap);
     Allocation {
         factors,
-        largest,
         extra_cost,
         seconds: start.elapsed().as_secs_f64(),
     }
@@ -273,9 +272,9 @@ pub fn sample_cost(chain: &Leaves) -> f32 {
 /// samples would cost more than half of the render's. Powers of four
 /// keep each pixel's samples a (0, m, 2)-net: ZSobol shuffles base-4
 /// digits, so a pixel's first `2^j` of `2^L` samples are an aligned block
-/// only when `L - j` is even. Returns them, the largest and the extra
-/// cost as a fraction of the render's without them.
-pub fn factors(pilots: &[Pilot], max_factor: u32) -> (Vec<u32>, u32, f64) {
+/// only when `L - j` is even. Returns them and the extra cost as a
+/// fraction of the render's without them.
+pub fn factors(pilots: &[Pilot], max_factor: u32) -> (Vec<u32>, f64) {
     let total: f64 = pilots.iter().map(|p| p.cost as f64).sum();
     let mean_cost = (total / pilots.len().max(1) as f64) as f32;
     let factor = |p: &Pilot, cap: u32| -> u32 {
@@ -295,13 +294,8 @@ pub fn factors(pilots: &[Pilot], max_factor: u32) -> (Vec<u32>, u32, f64) {
     while cap > 1 && 2.0 * extra_cost(cap) > total {
         cap /= 4;
     }
-    let factors: Vec<u32> = pilots.iter().map(|p| factor(p, cap)).collect();
-    let largest = factors.iter().copied().max().unwrap_or(1);
-    (
-        factors,
-        largest,
-        extra_cost(cap) / total.max(f64::MIN_POSITIVE),
-    )
+    let factors = pilots.iter().map(|p| factor(p, cap)).collect();
+    (factors, extra_cost(cap) / total.max(f64::MIN_POSITIVE))
 }
 
 /// The largest factor a render of `size` at `spp` samples may take: ZSobol

@@ -67,10 +67,7 @@ pub fn render_tiles<T: Copy + Default + Send>(
         })
         .collect();
     let bar = progress_bar(settings.progress, tiles.len() as u64);
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(settings.threads.unwrap_or(0))
-        .build()
-        .expect("a thread pool");
+    let pool = thread_pool(settings);
     let sampler =
         settings
             .sampler
@@ -107,6 +104,14 @@ pub fn render_tiles<T: Copy + Default + Send>(
         threads: pool.current_num_threads(),
     };
     (image, stats)
+}
+
+/// A pool of `settings.threads` threads (every core for `None`).
+pub fn thread_pool(settings: &RenderSettings) -> rayon::ThreadPool {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(settings.threads.unwrap_or(0))
+        .build()
+        .expect("a thread pool")
 }
 
 fn progress_bar(enabled: bool, tiles: u64) -> ProgressBar {

@@ -133,9 +133,10 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
         }
     }
     let part = part(&scene)?;
+    let settings = args.render_settings();
     let glints_off = Decision::off_by_flags(
         args.glints() && !args.no_plan,
-        args.render_settings().samples_per_pixel,
+        settings.samples_per_pixel,
         part.adaptive.is_some(),
     );
     if args.info {
@@ -181,7 +182,6 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
             with_environment_samples(&tracer, &world.lights, world.caustics).0
         }
     };
-    let settings = args.render_settings();
     let allocation = plan
         .glints
         .then(|| allocate(&world, &camera, &settings, tracer.max_depth));
@@ -189,7 +189,7 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
         crate::say_err!(
             "glints: {} pixels take more samples (up to {} times -s), {:.2} % more samples in all ({:.1} % more rays by the pilot's count); pilot {:.3} s (in the render's time)",
             a.pixels_above_one(),
-            a.largest,
+            a.largest(),
             100.0 * a.extra_fraction(),
             100.0 * a.extra_cost,
             a.seconds
@@ -222,7 +222,7 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
     write_film(&rendered, args)?;
     if part.rate_image {
         let path = rate_image_path(&args.output_path());
-        let largest = allocation.as_ref().map_or(1, |a| a.largest);
+        let largest = allocation.as_ref().map_or(1, Allocation::largest);
         rendered.write_rate_image(settings.samples_per_pixel * largest, &path)?;
         crate::say!("wrote {}", path.display())?;
     }
