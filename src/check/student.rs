@@ -82,6 +82,32 @@ pub struct StudentImage {
     pub rgb: Vec<u8>,
 }
 
+/// How long [`spawn_when_not_busy`] waits for a binary that is still open
+/// for writing.
+const BUSY_PATIENCE: Duration = Duration::from_secs(2);
+
+/// Spawns `command`, trying again for up to [`BUSY_PATIENCE`] while the
+/// kernel says the binary is busy (`ETXTBSY`). A binary that was just
+/// written (a script, or a build that has only now finished) can be held
+/// open for writing for a moment by a child that another thread forked
+/// before the file was closed, until that child's own `exec` closes it
+/// (see the Linux man page execve(2), ETXTBSY; Go's os/exec documents the
+/// same race). It passes by itself, so it is not the student's error.
+fn spawn_when_not_busy(command: &mut Command) -> std::io::Result<std::process::Child> {
+    let start = Instant::now();
+    loop {
+        match command.spawn() {
+            Err(e)
+                if e.kind() == std::io::ErrorKind::ExecutableFileBusy
+                    && start.elapsed() < BUSY_PATIENCE =>
+            {
+                std::thread::sleep(Duration::from_millis(10))
+            }
+            result => return result,
+        }
+    }
+}
+
 impl Student {
     /// Runs the binary with `args` and waits at most [`Student::timeout`];
     /// its output is captured (kept for a crash's message).
@@ -89,13 +115,14 @@ impl Student {
         if !self.binary.exists() {
             return Err(RunError::Missing(self.binary.clone()));
         }
-        let mut child = Command::new(&self.binary)
+        let mut command = Command::new(&self.binary);
+        command
             .args(args)
             .current_dir(&self.work)
             .stdin(Stdio::null())
             .stdout(Stdio::piped())
-            .stderr(Stdio::piped())
-            .spawn()
+            .stderr(Stdio::piped());
+        let mut child = spawn_when_not_busy(&mut command)
             .map_err(|e| RunError::NotExecutable(self.binary.clone(), e.to_string()))?;
         // Drain the pipes on threads, so a chatty binary cannot block.
         let drain = |pipe: Option<Box<dyn std::io::Read + Send>>| {
@@ -210,4 +237,31 @@ pub fn read_png(path: &Path, size: (u32, u32)) -> Result<StudentImage, RunError>
         height: found.1,
         rgb: decoded.into_raw(),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::io::Write;
+    use std::os::unix::fs::PermissionsExt;
+
+    /// A script held open for writing cannot be run (ETXTBSY); the spawn
+    /// waits until the writer lets go, rather than calling it unrunnable.
+    #[test]
+    fn a_binary_still_open_for_writing_is_run_once_it_is_closed() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("busy.sh");
+        let mut writer = std::fs::File::create(&path).unwrap();
+        writer.write_all(b"#!/bin/sh\nexit 7\n").unwrap();
+        std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o755)).unwrap();
+        let busy = Command::new(&path).spawn().unwrap_err();
+        assert_eq!(busy.kind(), std::io::ErrorKind::ExecutableFileBusy);
+        let release = std::thread::spawn(move || {
+            std::thread::sleep(Duration::from_millis(100));
+            drop(writer);
+        });
+        let mut child = spawn_when_not_busy(&mut Command::new(&path)).unwrap();
+        assert_eq!(child.wait().unwrap().code(), Some(7));
+        release.join().unwrap();
+    }
 }
