@@ -8,11 +8,11 @@ use std::process::{Command, Stdio};
 
 const PATHTRACER: &str = env!("CARGO_BIN_EXE_pathtracer");
 
-/// A small render of the built-in scene into `image` (a tenth of a second
-/// or more).
-fn small_render(image: &std::path::Path) -> Command {
+/// A small render of the built-in scene at `spp` samples a pixel into
+/// `image` (at 64, a tenth of a second or more).
+fn small_render(image: &std::path::Path, spp: u32) -> Command {
     let mut command = Command::new(PATHTRACER);
-    command.args(["-r", "64", "48", "-s", "64", "-t", "1", "-f"]);
+    command.args(["-r", "64", "48", "-t", "1", "-s", &spp.to_string(), "-f"]);
     command.arg(image);
     command
 }
@@ -21,7 +21,9 @@ fn small_render(image: &std::path::Path) -> Command {
 fn a_closed_pipe_ends_the_run_quietly_without_an_image() {
     let dir = tempfile::tempdir().unwrap();
     let image = dir.path().join("piped.png");
-    let mut child = small_render(&image)
+    // A render of a second or more, so that the test's thread, however
+    // late a loaded machine schedules it, closes the pipe before it ends.
+    let mut child = small_render(&image, 512)
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
@@ -56,7 +58,7 @@ fn a_full_device_on_stdout_is_a_clear_error() {
         return;
     };
     let dir = tempfile::tempdir().unwrap();
-    let out = small_render(&dir.path().join("full.png"))
+    let out = small_render(&dir.path().join("full.png"), 64)
         .stdout(full)
         .output()
         .unwrap();

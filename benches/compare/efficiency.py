@@ -228,7 +228,8 @@ SCENES = {
        for name, mat in (("mirror", MIRROR), ("glass", GLASS))
        for m, f in (("studio", "studio.hdr"), ("sky2k", "sky-2k.hdr"), ("sun2k", "sun-2k.hdr"),
                     ("sun4k_black", "sun-4k-black.hdr"))},
-    **{f"mirror_teapot+{m}": ("teapot.dae", 5, f, with_material("Default_007-effect", MIRROR))
+    **{f"{name}_teapot+{m}": ("teapot.dae", 5, f, with_material("Default_007-effect", mat))
+       for name, mat in (("mirror", MIRROR), ("glass", GLASS))
        for m, f in (("sun2k", "sun-2k.hdr"), ("sun4k_black", "sun-4k-black.hdr"))},
 }
 # The scenes run when neither --only nor --scene is given.
