@@ -231,6 +231,12 @@ SCENES = {
     **{f"{name}_teapot+{m}": ("teapot.dae", 5, f, with_material("Default_007-effect", mat))
        for name, mat in (("mirror", MIRROR), ("glass", GLASS))
        for m, f in (("sun2k", "sun-2k.hdr"), ("sun4k_black", "sun-4k-black.hdr"))},
+    # Held out: smaller maps with the sun under a texel (1k, 512) or a
+    # large sun of a few texels (`sun-small`, 2 degrees at 256 x 128).
+    **{f"{name}_bunny+{m}": ("bunny_unlit.dae", 5, f, with_material("Default-effect", mat))
+       for name, mat in (("mirror", MIRROR), ("glass", GLASS), ("smooth_copper", SMOOTH_COPPER))
+       for m, f in (("sun1k", "sun-1k.hdr"), ("sun512", "sun-512.hdr"),
+                    ("sunsmall", "sun-small.hdr"))},
 }
 # The scenes run when neither --only nor --scene is given.
 DEFAULT = ["CBspheres_lambertian", "CBbunny", "CBspheres_microfacet_al_ag", "bunny_unlit+studio",
@@ -240,6 +246,9 @@ MAP_COMMANDS = {
     "sky-2k.hdr": "--sky sky-2k.hdr",
     "sun-2k.hdr": "--sky sun-2k.hdr --sun-degrees 0.27",
     "sun-4k-black.hdr": "--sky sun-4k-black.hdr --height 2048 --sun-degrees 0.27 --black-ground",
+    "sun-1k.hdr": "--sky sun-1k.hdr --height 512 --sun-degrees 0.27",
+    "sun-512.hdr": "--sky sun-512.hdr --height 256 --sun-degrees 0.27",
+    "sun-small.hdr": "--sky sun-small.hdr --height 128 --sun-degrees 2",
 }
 
 

@@ -106,7 +106,11 @@ impl Sky {
         l
     }
 
-    /// The sky as a `2 height x height` map named `source`.
+    /// The sky as a `2 height x height` map named `source`, each texel
+    /// the radiance at its centre. A sun a few texels wide keeps its power
+    /// roughly; one smaller than a texel only where a centre falls inside
+    /// it (the real sun, 0.27 degrees, is two texels of a 1k map and none
+    /// of a 512-wide one).
     pub fn map(&self, source: &str, height: usize) -> Result<EnvironmentMap, EnvironmentError> {
         EnvironmentMap::from_fn(source, 2 * height, height, |d| self.radiance(d))
     }
