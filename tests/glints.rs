@@ -257,6 +257,23 @@ fn glint_samples_change_the_variance_not_the_mean() {
     assert!(v1 < 0.5 * v0, "{v1} against {v0}");
 }
 
+/// The render's time counts the pilot's: a render given an allocation
+/// whose pilot took an hour reports at least the hour and the render
+/// besides, and without one only the render.
+#[test]
+fn the_render_time_counts_the_pilot() {
+    let scene = ball_on_a_floor();
+    let bvh = accel(&scene);
+    let world = world_under(&scene, &bvh, sun_map());
+    let mut a = allocate(&world, &camera(), &settings(16, 0), 5);
+    let hour = 3600.0;
+    a.seconds = hour;
+    let alone = render(&world, None, 0).stats.seconds;
+    let with_pilot = render(&world, Some(&a), 0).stats.seconds;
+    assert!(alone < hour, "{alone}");
+    assert!(with_pilot > hour && with_pilot < 2.0 * hour, "{with_pilot}");
+}
+
 /// The pilot's chains: a camera ray straight at the mirror ball's top
 /// escapes once, reflected, with the mirror's weight; one at the floor
 /// ends there (a diffuse surface) without a leaf, and one at the sky
