@@ -30,8 +30,12 @@
 //! `H` rows (default 1024: a 2k map), a sun of angular radius `R` degrees
 //! (default the built-in sky's 2; the real sun's is 0.27) lighting a
 //! surface as the built-in sun does, and black below the horizon with
-//! `--black-ground`. Prints, per map: where its light and its
-//! sampling probability sit, what sampling the cells by their texels
+//! `--black-ground`. Says how many texels hold the sun and how much of its
+//! power (a texel takes the sky at its centre, so a sun smaller than a
+//! texel can be lost: it warns).
+//!
+//! Without `--sky`, it prints per map: where its light and its sampling
+//! probability sit, what sampling the cells by their texels
 //! instead of the cell-averaged lookup would miss, and the standard
 //! deviation of the one-sample estimators of `integral L dw` and of the
 //! irradiance of an upward-facing surface, uniform against importance
@@ -300,6 +304,15 @@ fn main() -> Result<()> {
         let map = sky.map(&file.display().to_string(), height)?;
         write_hdr(&map, &file)?;
         eprintln!("wrote {} ({} x {height})", file.display(), 2 * height);
+        let sun = sky.sun_in_map(height);
+        eprintln!(
+            "the sun: {} texels, holding {:.1} % of its power (each texel takes the sky at its centre)",
+            sun.texels,
+            100.0 * sun.power_in_map / sun.power
+        );
+        if sun.texels == 0 {
+            eprintln!("warning: no texel's centre lies in the sun: this map has no sun (more rows, or a larger --sun-degrees, give it one)");
+        }
         return Ok(());
     }
     std::fs::create_dir_all(&out)?;
