@@ -220,9 +220,9 @@ fn hemisphere_and_light_sampling_agree_in_a_closed_box() {
 }
 
 /// Russian roulette changes the variance, not the mean: two points of the
-/// Cornell box at depth 10 with roulette off, and on by each rule (the
+/// Cornell box at depth 13 with roulette off, and on by each rule (the
 /// course's fixed `q` from the second vertex, the throughput rule after
-/// [`THROUGHPUT_ROULETTE_AFTER`] bounces, so depth 10 gives it four
+/// [`THROUGHPUT_ROULETTE_AFTER`] bounces, so depth 13 gives it four
 /// vertices to act on), two-sample z-tests.
 /// Checked by hand: not dividing by the continuation probability fails
 /// (the fixed roulette's estimate drops by 6 %, 50 standard errors).
@@ -234,7 +234,7 @@ fn russian_roulette_on_and_off_agree() {
     let eye = Vec3::new(0.0, 0.75, 0.9);
     let targets = [Vec3::new(0.2, 0.0, -0.3), Vec3::new(-1.0, 0.5, -0.5)];
     let rules = [Roulette::Fixed, Roulette::Throughput];
-    const DEPTH: u32 = 10;
+    const DEPTH: u32 = 13;
     const { assert!(DEPTH > THROUGHPUT_ROULETTE_AFTER + 2) };
     let alpha = ALPHA / (targets.len() * rules.len()) as f64;
     for (k, target) in targets.into_iter().enumerate() {

@@ -198,6 +198,8 @@ SCENES = {
     # emissive ceiling mesh glows besides its point light, which this
     # project counts and the Mitsuba tool leaves out.
     "CBspheres": ("CBspheres.dae", 5, None, None),
+    # Issue 24's own setting for it, `-m 8`: where roulette acts.
+    "CBspheres_m8": ("CBspheres.dae", 8, None, None),
     "teapot+studio": ("teapot.dae", 5, "studio.hdr", None),
     # Outdoor maps the sampler was not tuned on (`environment_map --sky`).
     "copper_bunny+sky2k": ("bunny_unlit.dae", 5, "sky-2k.hdr", with_material("Default-effect", COPPER)),

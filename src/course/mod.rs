@@ -11,7 +11,7 @@
 //! | what | the project | the course (a correct solution) | where |
 //! | --- | --- | --- | --- |
 //! | integrator | MIS, the render plan | the starter's functions ([`tracer`]) | `pathtracer.cpp` |
-//! | random numbers, roulette | Sobol', throughput roulette after 5 bounces | independent, `q = 0.65` from the second vertex | `random_util.h`, handout |
+//! | random numbers, roulette | Sobol', throughput roulette after 8 bounces | independent, `q = 0.65` from the second vertex | `random_util.h`, handout |
 //! | area and point light samples | physical | the starter's `sample_L` ([`LightConvention::Course`]) | `static_scene/light.cpp` |
 //! | `-H` | sees the area lights | sees geometry only (the lamp mesh) | `estimate_direct_lighting_hemisphere` |
 //! | lamps in 3-2 | the lamp mesh | the light's own quad, `L / A cos` | 3-2 starter |

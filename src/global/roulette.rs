@@ -11,8 +11,8 @@
 //!   whatever the path carries, from the second scattering vertex on (never
 //!   on the first indirect bounce).
 //! - [`Roulette::Throughput`], pbrt-v4's rule (section 13.1.6) applied after
-//!   [`THROUGHPUT_ROULETTE_AFTER`] bounces, as Mitsuba 3's path tracer does
-//!   by default (`rr_depth = 5`): `q` follows what the path can still bring,
+//!   [`THROUGHPUT_ROULETTE_AFTER`] bounces (8; Mitsuba 3's path tracer
+//!   starts after 5, `rr_depth`): `q` follows what the path can still bring,
 //!
 //!   ```text
 //!   q = min(1, max_channel(beta * eta_scale)),   eta_scale = prod eta_k^2
@@ -33,6 +33,17 @@
 //!   after 5 bounces halves the squared error of `CBspheres_microfacet_al_ag`
 //!   at `-m 5` for 1.34 times the time, and gains 1.4 to 1.7 in efficiency
 //!   on `CBspheres_lambertian` (`-m 8`) and `CBbunny`.
+//!
+//!   Why after 8 and not 5: `q` reads the throughput alone, not the
+//!   radiance the path will find. Where a dark path can still reach a
+//!   bright light through glass or a mirror (`CBspheres`), the few that
+//!   survive come back at `1 / q` times a large value: after 5 bounces,
+//!   roulette doubled `CBspheres`' squared error at `-m 8` (8.0e-4
+//!   against 3.9e-4 without it) and saved 15 % of the time; after 8 it
+//!   gains 1.44 times in efficiency at `-m 16`, and costs the diffuse
+//!   `CBspheres_lambertian` 0.95 to 0.97 times, within the timing noise
+//!   (docs/10-performance.md). A rule that weighs the radiance to come is
+//!   Vorba and Křivánek's adjoint-driven roulette (ACM TOG 35(4), 2016).
 
 use crate::math::Rgb;
 
@@ -41,7 +52,7 @@ use crate::math::Rgb;
 pub const CONTINUE_PROBABILITY: f32 = 0.65;
 
 /// Bounces a path makes before throughput roulette may end it.
-pub const THROUGHPUT_ROULETTE_AFTER: u32 = 5;
+pub const THROUGHPUT_ROULETTE_AFTER: u32 = 8;
 
 /// How paths are ended (`--roulette`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
