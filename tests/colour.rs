@@ -182,8 +182,11 @@ fn coloured_rectangle_light_on_a_coloured_floor() {
 ///
 /// At `m = 3` without Russian roulette by hemisphere sampling and by BSDF
 /// sampling alone (exact up to rounding: `f cos / pdf = a` and every ray
-/// finds `Le`), and the infinite sum by BSDF sampling with the throughput
-/// rule, whose `q` follows the coloured throughput. Light sampling is left
+/// finds `Le`), the infinite sum by BSDF sampling with the throughput
+/// rule, whose `q` follows the coloured throughput, and `m = 12` with the
+/// course's fixed rule, which acts from the second vertex (the throughput
+/// rule acts only after 8 bounces, where green and blue bring almost
+/// nothing). Light sampling is left
 /// to the integrating spheres below: in a box, light samples on a wall
 /// next to a vertex near an edge make the estimator's variance infinite
 /// (the integrand grows as `1 / distance^2` to the edge), so its
@@ -192,7 +195,9 @@ fn coloured_rectangle_light_on_a_coloured_floor() {
 /// Checked by hand to fail when the path tracer (`src/global/mod.rs`)
 /// multiplies the throughput by the BSDF weight with its green and blue
 /// swapped (`weight.xzy()`: 69 standard errors), when it divides only the
-/// red channel by the roulette's `q` (the roulette case, 340), and when
+/// red channel by the roulette's `q` (`PathWeight::survived`: the fixed
+/// rule's case, 203; the throughput rule's, 340 when it started after 5
+/// bounces, no longer sees it), and when
 /// `DirectHemisphere::estimate` drops the blue channel. (The roulette's
 /// `q` reading one channel instead of the maximum is not wrong: any `q`
 /// keeps the mean, and here red is the maximum anyway.)
@@ -224,6 +229,13 @@ fn coloured_furnace_sums_each_channel_s_bounces() {
             bsdf,
             200,
             Roulette::Throughput,
+            40_000,
+        ),
+        (
+            "BSDF sampling, the course's roulette, m = 12",
+            bsdf,
+            12,
+            Roulette::Fixed,
             40_000,
         ),
     ];

@@ -233,8 +233,9 @@ SCENES = {
     **{f"{name}_teapot+{m}": ("teapot.dae", 5, f, with_material("Default_007-effect", mat))
        for name, mat in (("mirror", MIRROR), ("glass", GLASS))
        for m, f in (("sun2k", "sun-2k.hdr"), ("sun4k_black", "sun-4k-black.hdr"))},
-    # Held out: smaller maps with the sun under a texel (1k, 512) or a
-    # large sun of a few texels (`sun-small`, 2 degrees at 256 x 128).
+    # Held out: smaller maps, the real sun two texels of the 1k one and
+    # between the 512-wide one's texel centres (so none), or a large sun
+    # of a few texels (`sun-small`, 2 degrees at 256 x 128).
     **{f"{name}_bunny+{m}": ("bunny_unlit.dae", 5, f, with_material("Default-effect", mat))
        for name, mat in (("mirror", MIRROR), ("glass", GLASS), ("smooth_copper", SMOOTH_COPPER))
        for m, f in (("sun1k", "sun-1k.hdr"), ("sun512", "sun-512.hdr"),
