@@ -48,7 +48,7 @@ use crate::scene::Scene;
 
 pub use battery::{battery, Check, Stage};
 pub use scenes::{CheckScene, COURSE_SCENE};
-pub use student::{Capabilities, RunError, Student};
+pub use student::{wait_at_most, Capabilities, RunError, Student};
 pub use verdict::{judge, CheckImages, CheckResult, Outcome, Suspect};
 
 /// The chance that a correct renderer fails one or more checks of a full

@@ -6,7 +6,7 @@
 
 use std::fmt;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+use std::process::{Child, Command, ExitStatus, Stdio};
 use std::time::{Duration, Instant};
 
 use crate::render::rendered::rate_image_path;
@@ -93,7 +93,7 @@ const BUSY_PATIENCE: Duration = Duration::from_secs(2);
 /// before the file was closed, until that child's own `exec` closes it
 /// (see the Linux man page execve(2), ETXTBSY; Go's os/exec documents the
 /// same race). It passes by itself, so it is not the student's error.
-fn spawn_when_not_busy(command: &mut Command) -> std::io::Result<std::process::Child> {
+fn spawn_when_not_busy(command: &mut Command) -> std::io::Result<Child> {
     let start = Instant::now();
     loop {
         match command.spawn() {
@@ -104,6 +104,24 @@ fn spawn_when_not_busy(command: &mut Command) -> std::io::Result<std::process::C
                 std::thread::sleep(Duration::from_millis(10))
             }
             result => return result,
+        }
+    }
+}
+
+/// Waits for `child` to exit, at most `timeout`: its status, or `None`
+/// when it took longer (it is then killed and reaped) or could not be
+/// waited for.
+pub fn wait_at_most(child: &mut Child, timeout: Duration) -> Option<ExitStatus> {
+    let start = Instant::now();
+    loop {
+        match child.try_wait() {
+            Ok(Some(status)) => return Some(status),
+            Ok(None) if start.elapsed() < timeout => std::thread::sleep(Duration::from_millis(20)),
+            _ => {
+                let _ = child.kill();
+                let _ = child.wait();
+                return None;
+            }
         }
     }
 }
@@ -136,20 +154,8 @@ impl Student {
         };
         let out = drain(child.stdout.take().map(|p| Box::new(p) as _));
         let err = drain(child.stderr.take().map(|p| Box::new(p) as _));
-        let start = Instant::now();
-        let status = loop {
-            match child.try_wait() {
-                Ok(Some(status)) => break status,
-                Ok(None) if start.elapsed() < self.timeout => {
-                    std::thread::sleep(Duration::from_millis(20))
-                }
-                _ => {
-                    let _ = child.kill();
-                    let _ = child.wait();
-                    return Err(RunError::TimedOut(self.timeout));
-                }
-            }
-        };
+        let status =
+            wait_at_most(&mut child, self.timeout).ok_or(RunError::TimedOut(self.timeout))?;
         Ok(std::process::Output {
             status,
             stdout: out.join().unwrap_or_default(),

@@ -102,6 +102,15 @@ pub fn uv_to_direction(uv: Vec2) -> Vec3 {
     Vec3::new(-sin_theta * cos_phi, cos_theta, sin_theta * sin_phi)
 }
 
+/// The unit direction through the centre of texel `(i, j)` (column, row
+/// from the top) of a `width x height` map.
+pub fn texel_direction(i: usize, j: usize, width: usize, height: usize) -> Vec3 {
+    uv_to_direction(Vec2::new(
+        (i as f32 + 0.5) / width as f32,
+        (j as f32 + 0.5) / height as f32,
+    ))
+}
+
 impl EnvironmentMap {
     /// A map of `width x height` texels (rows from the top), checked: 2:1,
     /// at least 2 x 1, every channel of every texel finite, non-negative
@@ -159,13 +168,7 @@ impl EnvironmentMap {
         radiance: impl Fn(Vec3) -> Rgb,
     ) -> Result<Self, EnvironmentError> {
         let texels = (0..width * height)
-            .map(|k| {
-                let uv = Vec2::new(
-                    ((k % width) as f32 + 0.5) / width as f32,
-                    ((k / width) as f32 + 0.5) / height as f32,
-                );
-                radiance(uv_to_direction(uv))
-            })
+            .map(|k| radiance(texel_direction(k % width, k / width, width, height)))
             .collect();
         Self::new(source, width, height, texels)
     }

@@ -23,7 +23,7 @@
 
 use glam::Vec3;
 
-use super::map::{uv_to_direction, EnvironmentError, EnvironmentMap};
+use super::map::{texel_direction, EnvironmentError, EnvironmentMap};
 use crate::math::{luminance, Rgb};
 
 /// The name the built-in sky carries in messages.
@@ -104,7 +104,7 @@ impl Sky {
     pub fn radiance(&self, d: Vec3) -> Rgb {
         let zenith = Rgb::new(0.18, 0.32, 0.75);
         let horizon = Rgb::new(0.85, 0.9, 1.0);
-        let angle = d.dot(self.sun).clamp(-1.0, 1.0).acos();
+        let angle = self.angle_to_sun(d);
         let sky = |y: f32| {
             let t = (1.0 - y.max(0.0)).powi(3);
             zenith.lerp(horizon, t) + Rgb::new(1.0, 0.85, 0.6) * (2.0 * (-angle / 0.15).exp())
@@ -121,6 +121,11 @@ impl Sky {
         l
     }
 
+    /// The angle (radians) between the unit direction `d` and the sun's.
+    fn angle_to_sun(&self, d: Vec3) -> f32 {
+        d.dot(self.sun).clamp(-1.0, 1.0).acos()
+    }
+
     /// How the sun comes out in a `2 height x height` map of this sky: the
     /// texels whose centre lies in its disk, and the power those add,
     /// `sum L_sun dw_texel` (luminance; a texel's solid angle is
@@ -130,23 +135,21 @@ impl Sky {
         let (w, h) = (2 * height, height);
         let radiance = f64::from(luminance(SUN_COLOUR * self.sun_radiance));
         let texel = (2.0 * std::f64::consts::PI / w as f64) * (std::f64::consts::PI / h as f64);
-        let mut found = SunInMap {
-            texels: 0,
-            power_in_map: 0.0,
-            power: 2.0 * std::f64::consts::PI * (1.0 - f64::from(self.sun_radius).cos()) * radiance,
-        };
-        for y in 0..h {
-            let v = (y as f32 + 0.5) / h as f32;
-            let sin_theta = f64::from((std::f32::consts::PI * v).sin());
-            for x in 0..w {
-                let d = uv_to_direction(glam::Vec2::new((x as f32 + 0.5) / w as f32, v));
-                if d.dot(self.sun).clamp(-1.0, 1.0).acos() <= self.sun_radius {
-                    found.texels += 1;
-                    found.power_in_map += radiance * texel * sin_theta;
+        let (mut texels, mut sin_thetas) = (0, 0.0);
+        for j in 0..h {
+            let sin_theta = (std::f64::consts::PI * (j as f64 + 0.5) / h as f64).sin();
+            for i in 0..w {
+                if self.angle_to_sun(texel_direction(i, j, w, h)) <= self.sun_radius {
+                    texels += 1;
+                    sin_thetas += sin_theta;
                 }
             }
         }
-        found
+        SunInMap {
+            texels,
+            power_in_map: radiance * texel * sin_thetas,
+            power: 2.0 * std::f64::consts::PI * (1.0 - f64::from(self.sun_radius).cos()) * radiance,
+        }
     }
 
     /// The sky as a `2 height x height` map named `source`, each texel

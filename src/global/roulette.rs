@@ -20,8 +20,10 @@
 //!
 //!   over the refractions `k` the path crossed. A bright path is never
 //!   cut; a dark one is cut often, and the survivors come back at
-//!   `beta / q`, about 1 per channel at most, so roulette adds little
-//!   variance where it saves most time. Refraction into a denser medium
+//!   `beta / q`, about 1 per channel at most: little variance where the
+//!   light still to come is about as bright as what the path has
+//!   gathered (not so near a bright light seen through glass, below).
+//!   Refraction into a denser medium
 //!   scales radiance by `1 / eta^2` (the BSDF's `T / eta^2`), which says
 //!   nothing about the light the path will find; `eta_scale` cancels it, so
 //!   paths inside glass are not cut for it.

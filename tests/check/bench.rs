@@ -13,7 +13,9 @@ use std::sync::OnceLock;
 use std::time::Duration;
 
 use pathtracer::check::battery::battery_of;
-use pathtracer::check::{judge, Check, CheckResult, CheckScene, Outcome, Stage, Student};
+use pathtracer::check::{
+    judge, wait_at_most, Check, CheckResult, CheckScene, Outcome, Stage, Student,
+};
 use pathtracer::course::Assignment;
 use pathtracer::mistakes::Mistake;
 use pathtracer::scene::Scene;
@@ -247,21 +249,7 @@ fn dump_dom(browser: &str, path: &Path) -> Option<String> {
         .stderr(std::process::Stdio::null())
         .spawn()
         .ok()?;
-    let start = std::time::Instant::now();
-    let status = loop {
-        match child.try_wait().ok()? {
-            Some(status) => break status,
-            None if start.elapsed() < Duration::from_secs(60) => {
-                std::thread::sleep(Duration::from_millis(50))
-            }
-            None => {
-                let _ = child.kill();
-                let _ = child.wait();
-                return None;
-            }
-        }
-    };
-    status
+    wait_at_most(&mut child, Duration::from_secs(60))?
         .success()
         .then(|| std::fs::read_to_string(&dom_file).unwrap())
 }
