@@ -5,7 +5,16 @@
 use clap::Parser;
 use pathtracer::cli::check::{check, CheckArgs};
 use pathtracer::cli::exit_with;
+use std::process::ExitCode;
 
-fn main() -> std::process::ExitCode {
-    exit_with(check(&CheckArgs::parse()))
+/// 0 when every check that ran passed, 1 when one did not, 2 for a usage
+/// error (clap's own), a binary that cannot be run, or nothing to check.
+fn main() -> ExitCode {
+    match check(&CheckArgs::parse()) {
+        Ok(status) => status,
+        Err(e) => match exit_with(Err(e)) {
+            ExitCode::FAILURE => ExitCode::from(2),
+            other => other,
+        },
+    }
 }

@@ -12,7 +12,7 @@ mod bench;
 
 use std::time::Duration;
 
-use bench::{others_that_fit, report_is_whole, script, stand_in, Bench, PATHTRACER};
+use bench::{others_that_fit, refusing, report_is_whole, script, stand_in, Bench, PATHTRACER};
 use pathtracer::adaptive::Adaptive;
 use pathtracer::check::battery::SIZE;
 use pathtracer::check::rates::RATE_ROUNDING;
@@ -180,18 +180,33 @@ fn no_rate_image_is_a_clear_line() {
         matches!(&outcome, Outcome::Error(why) if why.contains("check_rate.png") && why.contains("64x48")),
         "{outcome:?}"
     );
-    // What -h says: the project's usage lists -a; one that lists -s but
-    // not -a is of a year without it; one that prints nothing, 2023's.
+    // What a tiny render with -a says: the project's binary takes it; one
+    // whose getopt refuses it (the usage, exit status 1) has none; one
+    // that renders nothing at all is taken to have it, and its checks say
+    // how it fails.
+    let map = bench.map();
     for (body, adaptive) in [
         (format!("exec {PATHTRACER} \"$@\""), true),
-        ("echo 'usage: -s N -l N -m N'".to_string(), false),
+        (format!("exec {PATHTRACER} --course-exact=3-1 \"$@\""), true),
         ("exit 0".to_string(), true),
     ] {
         let student = bench.student(script(dir, "usage.sh", &body), Duration::from_secs(60));
-        assert_eq!(
-            student.capabilities().unwrap().adaptive_flag,
-            adaptive,
-            "{body}"
-        );
+        let caps = student.capabilities(&bench.scene_file, map.as_deref());
+        assert_eq!(caps.unwrap().adaptive_flag, adaptive, "{body}");
     }
+    let body = format!("exec {PATHTRACER} \"$@\"");
+    let student = bench.student(
+        refusing(dir, "no-a.sh", &["-a"], &body),
+        Duration::from_secs(60),
+    );
+    let caps = student
+        .capabilities(&bench.scene_file, map.as_deref())
+        .unwrap();
+    assert_eq!(
+        caps,
+        Capabilities {
+            adaptive_flag: false,
+            ..Capabilities::ALL
+        }
+    );
 }

@@ -59,10 +59,10 @@ pub const SIZE: (u32, u32) = (480, 360);
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Check {
     pub part: u8,
-    /// The assignment whose binary it checks: 3-1 for parts 2 to 5, 3-2
-    /// (whose parts 1 to 5 are the staff's library, its lamps the lights'
-    /// own quads) for parts 6 to 8. The reference renders as its correct
-    /// solution does.
+    /// The assignment whose binary it checks: 3-1 or 3-2 for parts 1 to
+    /// 5, 3-2 (whose parts 1 to 5 are the staff's library, its lamps the
+    /// lights' own quads) for parts 6 to 8. The reference renders as its
+    /// correct solution does.
     pub assignment: Assignment,
     /// The scene it renders.
     pub scene: CheckScene,
@@ -90,8 +90,9 @@ pub struct Check {
     pub environment: bool,
 }
 
-/// The battery: the checks of `parts`, of either assignment; those of
-/// assignment 3-1 when `parts` is empty.
+/// The battery: the checks of `parts`, those of parts 1 to 5 for a 3-1
+/// binary and those of 6 to 8 for a 3-2 one; those of assignment 3-1
+/// when `parts` is empty.
 pub fn battery(parts: &[u8]) -> Vec<Check> {
     if parts.is_empty() {
         return battery_of(Assignment::PathTracer1);
@@ -102,24 +103,33 @@ pub fn battery(parts: &[u8]) -> Vec<Check> {
         .collect()
 }
 
-/// Every check of `assignment`'s binary.
+/// Every check of `assignment`'s binary: parts 1 to 5 for 3-1; for 3-2
+/// those too, rendered as a correct 3-2 binary renders them (the staff's
+/// library, its lamps the lights' own quads), then parts 6 to 8.
 pub fn battery_of(assignment: Assignment) -> Vec<Check> {
     every_check()
         .into_iter()
-        .filter(|c| c.assignment == assignment)
+        .filter(|c| c.assignment == assignment || assignment == Assignment::PathTracer2)
+        .map(|c| Check { assignment, ..c })
         .collect()
 }
 
-/// The assignment a binary checked for `parts` is of: 3-2 when every part
-/// is 6 or more, 3-1 when every one is 5 or less (or none is named);
-/// `None` when they mix the two.
+/// The checks of `parts` (every one when empty) of `assignment`'s binary
+/// ([`battery_of`]).
+pub fn battery_for(assignment: Assignment, parts: &[u8]) -> Vec<Check> {
+    battery_of(assignment)
+        .into_iter()
+        .filter(|c| parts.is_empty() || parts.contains(&c.part))
+        .collect()
+}
+
+/// The assignment a binary checked for `parts` is of: 3-2 when any part
+/// is 6 or more (only a 3-2 binary has them), else `None` (either).
 pub fn assignment_of(parts: &[u8]) -> Option<Assignment> {
-    let late = parts.iter().filter(|&&p| p >= 6).count();
-    match late {
-        0 => Some(Assignment::PathTracer1),
-        n if n == parts.len() => Some(Assignment::PathTracer2),
-        _ => None,
-    }
+    parts
+        .iter()
+        .any(|&p| p >= 6)
+        .then_some(Assignment::PathTracer2)
 }
 
 /// The checks of both assignments, by part.
@@ -282,29 +292,28 @@ impl Check {
         flags
     }
 
-    /// The mistakes that can show in this check. Of 3-1: those of parts 1
-    /// to 3 and of its own part, which every render goes through (part
-    /// 2's check lights its mesh by part 3's light sampling); part 5's
-    /// only where the check sets `-a` (they change nothing below 32
-    /// samples otherwise). Of 3-2, whose parts 1 to 5 are the staff's:
-    /// part 6's of mirror and glass where the scene has them, of the rough
-    /// metal where it has that, part 7's with a map, part 8's where the
-    /// check has a lens (each changes nothing elsewhere).
+    /// The mistakes that can show in this check. Of parts 1 to 5: those
+    /// of parts 1 to 3 and of its own part, which every render goes
+    /// through (part 2's check lights its mesh by part 3's light
+    /// sampling); part 5's only where the check sets `-a` (they change
+    /// nothing below 32 samples otherwise). Of parts 6 to 8, whose binary's
+    /// parts 1 to 5 are the staff's: part 6's of mirror and glass where
+    /// the scene has them, of the rough metal where it has that, part 7's
+    /// with a map, part 8's where the check has a lens (each changes
+    /// nothing elsewhere).
     pub fn suspects(&self) -> Vec<Mistake> {
         Mistake::ALL
             .into_iter()
-            .filter(|m| match (self.assignment, m.info().part) {
-                (Assignment::PathTracer1, part) => {
-                    part <= self.part.max(3) && (part != 5 || self.adaptive.is_some())
-                }
-                (Assignment::PathTracer2, 6) => match self.scene {
+            .filter(|m| match (self.part, m.info().part) {
+                (1..=5, part) => part <= self.part.max(3) && (part != 5 || self.adaptive.is_some()),
+                (_, 6) => match self.scene {
                     CheckScene::Specular => MATERIAL_MISTAKES.contains(m),
                     CheckScene::Microfacet => MICROFACET_MISTAKES.contains(m),
                     _ => false,
                 },
-                (Assignment::PathTracer2, 7) => self.environment,
-                (Assignment::PathTracer2, 8) => self.lens.is_some(),
-                (Assignment::PathTracer2, _) => false,
+                (_, 7) => self.environment,
+                (_, 8) => self.lens.is_some(),
+                _ => false,
             })
             .collect()
     }
@@ -317,21 +326,37 @@ mod tests {
     /// The parts say the assignment; empty, 3-1; mixed, none.
     #[test]
     fn parts_say_which_assignment() {
-        assert_eq!(assignment_of(&[]), Some(Assignment::PathTracer1));
-        assert_eq!(assignment_of(&[3, 5]), Some(Assignment::PathTracer1));
+        assert_eq!(assignment_of(&[]), None);
+        assert_eq!(assignment_of(&[3, 5]), None);
         assert_eq!(assignment_of(&[6, 8]), Some(Assignment::PathTracer2));
-        assert_eq!(assignment_of(&[5, 6]), None);
+        assert_eq!(assignment_of(&[5, 6]), Some(Assignment::PathTracer2));
         let parts = |a| battery_of(a).iter().map(|c| c.part).collect::<Vec<_>>();
         assert_eq!(parts(Assignment::PathTracer1), [2, 3, 3, 4, 4, 5]);
-        assert_eq!(parts(Assignment::PathTracer2), [6, 6, 7, 8]);
+        assert_eq!(
+            parts(Assignment::PathTracer2),
+            [2, 3, 3, 4, 4, 5, 6, 6, 7, 8]
+        );
+        assert!(battery_of(Assignment::PathTracer2)
+            .iter()
+            .all(|c| c.assignment == Assignment::PathTracer2));
         assert_eq!(battery(&[]), battery_of(Assignment::PathTracer1));
+        let parts_for = |p: &[u8]| battery_for(Assignment::PathTracer2, p).len();
+        assert_eq!(
+            (parts_for(&[3]), parts_for(&[6, 8]), parts_for(&[])),
+            (2, 3, 10)
+        );
     }
 
-    /// A 3-2 check suspects only its own part's mistakes (its parts 1 to
-    /// 5 are the staff's), and passes its lens as `-b R -d D`.
+    /// A check of parts 6 to 8 suspects only its own part's mistakes (its
+    /// binary's parts 1 to 5 are the staff's), and passes its lens as `-b
+    /// R -d D`; a 3-2 binary's checks of parts 1 to 5 suspect what a 3-1
+    /// binary's do.
     #[test]
     fn three_two_checks_suspect_their_own_part() {
-        for check in battery_of(Assignment::PathTracer2) {
+        let late = battery_of(Assignment::PathTracer2)
+            .into_iter()
+            .filter(|c| c.part >= 6);
+        for check in late {
             let suspects = check.suspects();
             assert!(!suspects.is_empty());
             assert!(
@@ -344,5 +369,10 @@ mod tests {
         assert!(flags.ends_with("-b 0.5 -d 3.8"), "{flags}");
         assert_eq!(battery(&[6])[0].suspects().len(), 5);
         assert_eq!(battery(&[6])[1].suspects(), MICROFACET_MISTAKES);
+        let early = |a| battery_of(a)[1].suspects();
+        assert_eq!(
+            early(Assignment::PathTracer2),
+            early(Assignment::PathTracer1)
+        );
     }
 }

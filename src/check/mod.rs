@@ -16,6 +16,8 @@
 //! - [`verdict`]: what differs and where, and which mistakes fit;
 //! - [`patterns`]: single-pixel patterns of a failed image (holes, acne,
 //!   fireflies) against a correct render's own;
+//! - [`unwritten`]: the images of a starter's functions left as handed
+//!   out, each named as "not written yet";
 //! - [`outcome`]: what a judged check gives: its verdict and the images
 //!   the report shows;
 //! - [`report`]: `report.html`, one self-contained page;
@@ -40,6 +42,7 @@ pub mod sky;
 pub mod stage;
 pub mod stats;
 pub mod student;
+pub mod unwritten;
 pub mod verdict;
 
 use std::path::{Path, PathBuf};
@@ -47,7 +50,7 @@ use std::path::{Path, PathBuf};
 use crate::scene::Scene;
 
 pub use battery::{battery, Check, Stage};
-pub use scenes::{CheckScene, COURSE_SCENE};
+pub use scenes::{CheckScene, SceneFile, COURSE_SCENE};
 pub use student::{wait_at_most, Capabilities, RunError, Student};
 pub use verdict::{judge, CheckImages, CheckResult, Outcome, Suspect};
 
@@ -59,7 +62,9 @@ pub const ALPHA: f64 = 0.01;
 /// The scene file of [`CheckScene::Lambertian`] and the scene as this
 /// project loads it ([`CheckScene::file`]).
 pub fn scene_for_checks(scenes: Option<&Path>, out: &Path) -> Result<(PathBuf, Scene), String> {
-    CheckScene::Lambertian.file(scenes, out)
+    CheckScene::Lambertian
+        .file(scenes, out)
+        .map(|f| (f.path, f.scene))
 }
 
 /// The summary table: part, check, verdict, the likely mistake and the
@@ -73,6 +78,10 @@ pub fn table(results: &[CheckResult]) -> String {
         let (mistake, function) = match (&r.outcome, r.outcome.likely_mistake()) {
             (_, Some(m)) => (m.to_string(), m.info().function.to_string()),
             (Outcome::Fail { .. }, None) => ("none known fits".into(), r.check.function.into()),
+            (Outcome::NotWritten(u), None) => (
+                format!("not written yet (part {})", u.part),
+                format!("{} ({})", u.function, u.file),
+            ),
             (Outcome::Skipped(why) | Outcome::Error(why), None) => (why.clone(), String::new()),
             _ => (String::new(), String::new()),
         };

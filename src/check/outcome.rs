@@ -2,6 +2,7 @@
 //! mistakes that fit, skipped, error), and the images the report shows.
 
 use super::battery::Check;
+use super::unwritten::Unwritten;
 use crate::mistakes::Mistake;
 
 /// A catalogued mistake held against a failed image.
@@ -42,6 +43,9 @@ pub enum Outcome {
         /// The mistakes that fit, best first, then the rest by misfit.
         suspects: Vec<Suspect>,
     },
+    /// The image is the starter's own placeholder: a function still as
+    /// handed out ([`super::unwritten`]).
+    NotWritten(Unwritten),
     /// Not run, and why (a flag the binary lacks).
     Skipped(String),
     /// The binary gave no image: why.
@@ -62,6 +66,7 @@ impl Outcome {
         match self {
             Outcome::Pass { .. } => "pass",
             Outcome::Fail { .. } => "FAIL",
+            Outcome::NotWritten(_) => "not written",
             Outcome::Skipped(_) => "skipped",
             Outcome::Error(_) => "error",
         }

@@ -130,6 +130,16 @@ fn section(i: usize, r: &CheckResult) -> String {
         Outcome::Skipped(why) | Outcome::Error(why) => {
             let _ = write!(html, "<p>{}</p>", escape(why));
         }
+        Outcome::NotWritten(u) => {
+            let _ = write!(
+                html,
+                "<p>Not written yet: <code>{}</code> in <code>{}</code> (part {}): {}.</p>",
+                escape(u.function),
+                escape(u.file),
+                u.part,
+                escape(u.shows)
+            );
+        }
     }
     if let Some(images) = &r.images {
         html += &figures(images);
@@ -236,6 +246,7 @@ table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:0.2em 0.5em}<
         let likely = match (&r.outcome, r.outcome.likely_mistake()) {
             (_, Some(m)) => m.to_string(),
             (Outcome::Fail { .. }, None) => "none known fits".to_string(),
+            (Outcome::NotWritten(u), None) => format!("not written yet: {}", escape(u.function)),
             _ => String::new(),
         };
         let v = r.outcome.word();

@@ -38,7 +38,7 @@ use glam::Vec3;
 use super::battery::Stage;
 use crate::course::{Assignment, CourseExact};
 use crate::environment::{EnvironmentLight, EnvironmentMap, EnvironmentSampling};
-use crate::scene::{self, builtin, export_scene, Material, MaterialId, Scene};
+use crate::scene::{self, builtin, course_files, export_scene, Material, MaterialId, Scene};
 
 /// Which scene a check renders.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -141,20 +141,43 @@ impl CheckScene {
         )))
     }
 
-    /// The scene file to give the student and the scene as this project
-    /// loads it: for [`CheckScene::Lambertian`], [`CheckScene::Mesh`] and
-    /// [`CheckScene::Microfacet`] the course's from `scenes` (or `CS184_SCENES`) when there, else the
+    /// The scene file to give the student, the scene as this project
+    /// loads it, and a warning when a stand-in is used for a course scene
+    /// that was not found: for [`CheckScene::Lambertian`],
+    /// [`CheckScene::Mesh`] and [`CheckScene::Microfacet`] the course's
+    /// file found anywhere under `scenes` (or `CS184_SCENES`; the course's
+    /// `dae/` keeps its scenes in subfolders) when there, else the
     /// project's own written to `out/scenes/`.
-    pub fn file(self, scenes: Option<&Path>, out: &Path) -> Result<(PathBuf, Scene), String> {
+    pub fn file(self, scenes: Option<&Path>, out: &Path) -> Result<SceneFile, String> {
+        let from_env = std::env::var_os(course_files::ENV_VAR)
+            .filter(|v| !v.is_empty())
+            .map(PathBuf::from);
+        let root = scenes.map(Path::to_path_buf).or(from_env);
+        let mut warning = None;
         if let Some(name) = self.course_file() {
-            let from_env = std::env::var_os("CS184_SCENES").map(PathBuf::from);
-            if let Some(dir) = scenes.map(Path::to_path_buf).or(from_env) {
-                let path = dir.join(name);
-                if path.exists() {
-                    let loaded = scene::load(&path).map_err(|e| e.to_string())?;
-                    return Ok((path, loaded));
-                }
+            if let Some(path) = root
+                .as_ref()
+                .and_then(|r| course_files::find_in(std::slice::from_ref(r), name))
+            {
+                let loaded = scene::load(&path).map_err(|e| e.to_string())?;
+                return Ok(SceneFile {
+                    path,
+                    scene: loaded,
+                    warning,
+                });
             }
+            warning = Some(match &root {
+                Some(r) => format!(
+                    "{name} is not under {} (nor its subfolders): the checks use the project's stand-in, {}",
+                    r.display(),
+                    self.file_name()
+                ),
+                None => format!(
+                    "no --scenes (nor {}) to find the course's {name} in: the checks use the project's stand-in, {}",
+                    course_files::ENV_VAR,
+                    self.file_name()
+                ),
+            });
         }
         let folder = out.join("scenes");
         std::fs::create_dir_all(&folder).map_err(|e| format!("{}: {e}", folder.display()))?;
@@ -166,8 +189,51 @@ impl CheckScene {
             super::sky::write_exr(&map_file)?;
         }
         let loaded = scene::load(&path).map_err(|e| e.to_string())?;
-        Ok((path, loaded))
+        Ok(SceneFile {
+            path,
+            scene: loaded,
+            warning,
+        })
     }
+}
+
+/// The scene that tells a 3-2 binary from a 3-1 one
+/// ([`super::Student::renders_lamps_as_quads`]): the Cornell box with
+/// every surface emitting radiance 1 and no light. The 3-2 starter's
+/// loader makes every emissive mesh emit nothing (its `EmissionBSDF` is
+/// given the direction 0 and emits `radiance * max(0, dir . wo)`), so at
+/// `-m 0` a 3-2 binary renders it black; a 3-1 binary renders the walls'
+/// glow (or, not written yet, a placeholder, never black).
+pub fn glowing_box() -> Scene {
+    let mut scene = builtin::cornell_box();
+    scene.lights.clear();
+    scene.spheres.clear();
+    for m in &mut scene.materials {
+        *m = Material::Emission {
+            radiance: crate::math::Rgb::ONE,
+        };
+    }
+    scene
+}
+
+/// Writes [`glowing_box`] into `out/scenes/glowing-box.dae`.
+pub fn write_glowing_box(out: &Path) -> Result<PathBuf, String> {
+    let folder = out.join("scenes");
+    std::fs::create_dir_all(&folder).map_err(|e| format!("{}: {e}", folder.display()))?;
+    let path = folder.join("glowing-box.dae");
+    let mut text = Vec::new();
+    export_scene::write_scene_dae(&glowing_box(), &mut text).map_err(|e| e.to_string())?;
+    std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
+    Ok(path)
+}
+
+/// A check's scene: the file the student's binary reads and the scene
+/// as this project loads it from there.
+pub struct SceneFile {
+    pub path: PathBuf,
+    pub scene: Scene,
+    /// Set when the project's stand-in replaces a course scene not found.
+    pub warning: Option<String>,
 }
 
 /// The centre of [`specular_box`]'s glass cube (on the floor, lifted by

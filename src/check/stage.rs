@@ -11,11 +11,12 @@ use std::sync::Mutex;
 
 use super::battery::{Check, SIZE};
 use super::rates;
+use super::unwritten::Shadings;
 use crate::bvh::WideBvhAccel;
 use crate::course::{CourseExact, CourseSampling, CourseView, StarterDirect, StarterTracer};
 use crate::depth_of_field::ThinLens;
 use crate::environment::EnvironmentLight;
-use crate::intersect::Primitives;
+use crate::intersect::{Intersector, Primitives};
 use crate::math::Rgb;
 use crate::mistakes::Mistakes;
 use crate::raygen::Camera;
@@ -76,6 +77,25 @@ impl Stage {
             kept: Some(Mutex::default()),
             ..Stage::new(scene)
         }
+    }
+
+    /// The scene it renders.
+    pub fn scene(&self) -> &Scene {
+        &self.scene
+    }
+
+    /// The starter's first-hit shadings of this stage
+    /// ([`super::unwritten::Shadings`]), from each pixel's centre ray.
+    pub fn shadings(&self) -> Shadings {
+        let (w, h) = (SIZE.0 as usize, SIZE.1 as usize);
+        Shadings::new((0..w * h).map(|k| {
+            let (x, row) = (k % w, k / w);
+            let ray = self.camera.ray(
+                (x as f32 + 0.5) / w as f32,
+                1.0 - (row as f32 + 0.5) / h as f32,
+            );
+            (ray.dir, self.accel.intersect(&ray).map(|hit| hit.n))
+        }))
     }
 
     /// What a correct course solution (with `mistakes`) writes for

@@ -21,21 +21,31 @@ pub struct Student {
     pub timeout: Duration,
 }
 
-/// What the binary says it supports (from `-h`, whose usage lists the
-/// flags; a binary that prints nothing is assumed to have the 2023 set,
-/// `-a` and no `-o`).
+/// What the binary supports, found by trying each flag in a tiny render
+/// ([`Student::capabilities`]): no starter's usage text lists `-a` or
+/// `-H`, and the 2023 starters' none of `-o`, though getopt accepts what
+/// its option string names and refuses the rest (it prints the usage and
+/// exits with 1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Capabilities {
     /// `-o 0|1` (later years only).
     pub accumulate_flag: bool,
-    /// `-a BATCH TOL` (adaptive sampling): a usage that lists `-s` but
-    /// not `-a` is of a year without it.
+    /// `-a BATCH TOL` (adaptive sampling).
     pub adaptive_flag: bool,
-    /// `-b R` and `-d D` (the thin lens of 3-2's part 8): every year's
-    /// starter has them; a usage that lists `-s` but not `-b` lacks them.
+    /// `-b R` and `-d D` (the thin lens of 3-2's part 8).
     pub lens_flag: bool,
-    /// `-e FILE` (the environment map of 3-2's part 7), likewise.
+    /// `-e FILE` (the environment map of 3-2's part 7).
     pub environment_flag: bool,
+}
+
+impl Capabilities {
+    /// Every flag the checks use.
+    pub const ALL: Capabilities = Capabilities {
+        accumulate_flag: true,
+        adaptive_flag: true,
+        lens_flag: true,
+        environment_flag: true,
+    };
 }
 
 /// Why a run gave no image to compare.
@@ -51,6 +61,8 @@ pub enum RunError {
         expected: (u32, u32),
         found: (u32, u32),
     },
+    /// No check was asked for, so nothing was run.
+    NoChecks,
 }
 
 impl fmt::Display for RunError {
@@ -64,6 +76,7 @@ impl fmt::Display for RunError {
             RunError::Unreadable(p, e) => {
                 write!(f, "{}: not a PNG it could read: {e}", p.display())
             }
+            RunError::NoChecks => write!(f, "no check to run"),
             RunError::WrongSize { expected, found } => write!(
                 f,
                 "its image is {}x{}, the command asked for {}x{}",
@@ -163,20 +176,76 @@ impl Student {
         })
     }
 
-    /// What the binary supports, from its usage text.
-    pub fn capabilities(&self) -> Result<Capabilities, RunError> {
-        let output = self.run(&["-h".to_string()])?;
-        let text =
-            String::from_utf8_lossy(&output.stdout) + String::from_utf8_lossy(&output.stderr);
-        let says = |flag: &str| {
-            text.split_whitespace()
-                .any(|w| w.trim_end_matches(',') == flag)
+    /// Whether the binary renders the lamps the 3-2 way: at `-m 0` its
+    /// render of `glowing_box` ([`super::scenes::glowing_box`], every
+    /// surface emitting, no light) is black, as only a 3-2 starter's
+    /// loader makes it (but for the staff library's stamp in the bottom
+    /// left corner: nine in ten pixels black is enough); `None` when the
+    /// binary gave no image.
+    pub fn renders_lamps_as_quads(&self, glowing_box: &Path) -> Option<bool> {
+        let args: Vec<String> = ["-t", "1", "-s", "1", "-l", "1", "-m", "0", "-r", "48", "36"]
+            .iter()
+            .map(|w| w.to_string())
+            .chain([glowing_box.to_string_lossy().into_owned()])
+            .collect();
+        let image = self.render(&args, "lamps.png", (48, 36)).ok()?;
+        let black = image.rgb.chunks(3).filter(|p| *p == [0, 0, 0]).count();
+        Some(black * 10 >= 9 * image.rgb.len() / 3)
+    }
+
+    /// What the binary supports: a tiny render of `scene_file` (8 x 6
+    /// pixels, one sample, `-m 0`) with each flag. A flag is missing when
+    /// the render without it writes its image and the one with it exits
+    /// with 1, writes none and prints the usage, as the course's getopt
+    /// does for a flag it does not know. A binary whose tiny render fails
+    /// anyway is taken to have every flag: the checks then say how it
+    /// fails. `map` is an environment map to try `-e` with (without one,
+    /// `-e` is taken as there). An error only when the binary cannot be
+    /// run at all.
+    pub fn capabilities(
+        &self,
+        scene_file: &str,
+        map: Option<&Path>,
+    ) -> Result<Capabilities, RunError> {
+        let probe = |flags: &[&str]| -> Result<Option<bool>, RunError> {
+            let image = "probe.png";
+            let path = self.work.join(image);
+            let _ = std::fs::remove_file(&path);
+            let mut args: Vec<String> = ["-f", image, "-t", "1", "-s", "1", "-l", "1", "-m", "0"]
+                .iter()
+                .chain(&["-r", "8", "6"])
+                .chain(flags)
+                .map(|w| w.to_string())
+                .collect();
+            args.push(scene_file.to_string());
+            let output = self.run(&args)?;
+            let wrote = path.exists();
+            let _ = std::fs::remove_file(&path);
+            let _ = std::fs::remove_file(rate_image_path(&path));
+            let text = String::from_utf8_lossy(&output.stdout).to_lowercase()
+                + &String::from_utf8_lossy(&output.stderr).to_lowercase();
+            let refused = output.status.code() == Some(1) && !wrote && text.contains("usage");
+            Ok(if wrote {
+                Some(true)
+            } else if refused {
+                Some(false)
+            } else {
+                None
+            })
         };
+        if probe(&[])? != Some(true) {
+            return Ok(Capabilities::ALL);
+        }
+        let has = |flags: &[&str]| probe(flags).map(|found| found != Some(false));
+        let map = map.map(|m| m.to_string_lossy().into_owned());
         Ok(Capabilities {
-            accumulate_flag: says("-o"),
-            adaptive_flag: says("-a") || !says("-s"),
-            lens_flag: (says("-b") && says("-d")) || !says("-s"),
-            environment_flag: says("-e") || !says("-s"),
+            accumulate_flag: has(&["-o", "1"])?,
+            adaptive_flag: has(&["-a", "2", "0.2"])?,
+            lens_flag: has(&["-b", "0.1", "-d", "3"])?,
+            environment_flag: match &map {
+                Some(m) => has(&["-e", m])?,
+                None => true,
+            },
         })
     }
 

@@ -9,6 +9,8 @@ use super::rates;
 use super::scan::{scan, Scan, WINDOW};
 use super::stats::{self, chi_square_quantile, NullModel, BLOCK};
 use super::student::{Capabilities, Student};
+use super::unwritten;
+use crate::course::Assignment;
 use crate::math::{luminance, Rgb};
 use crate::mistakes::Mistakes;
 
@@ -184,9 +186,31 @@ pub fn judge(
             }
         }
     }
+    if check.assignment == Assignment::PathTracer2 {
+        // The staff library's stamp is no part of the image: for the
+        // placeholders, the row above it stands in.
+        let width = SIZE.0 as usize;
+        let above = written.image.clone();
+        written.image = unwritten::without_stamp(&written.image, |x, _| {
+            let k = 3 * ((unwritten::STAMP.1 - 1) * width + x);
+            [above[k], above[k + 1], above[k + 2]]
+        });
+    }
+    if let Some(u) = unwritten::placeholder(check, &written.image, &stage.shadings()) {
+        return result(Outcome::NotWritten(u));
+    }
     let renders: Vec<Render> = (0..NULL_RENDERS as u64)
         .map(|seed| stage.render(check, Mistakes::NONE, 1000 + seed, threads))
         .collect();
+    if check.assignment == Assignment::PathTracer2 {
+        // Nor is it judged: there, the correct renders' mean stands in.
+        let mean = mean_image(&renders.iter().map(|r| r.image.clone()).collect::<Vec<_>>());
+        let width = SIZE.0 as usize;
+        written.image = unwritten::without_stamp(&written.image, |x, y| {
+            let k = 3 * (y * width + x);
+            [mean[k], mean[k + 1], mean[k + 2]]
+        });
+    }
     let planes = Plane::of(check);
     let alpha = alpha / planes.len() as f64;
     let models: Vec<NullModel> = planes.iter().map(|p| p.model(&renders)).collect();
@@ -228,6 +252,20 @@ pub fn judge(
                 region_threshold,
             })
         };
+    }
+    if check.part == 6 {
+        // The starter's BSDFs of part 6 return zero: its surfaces black.
+        let black = Stage::new(unwritten::blackened(stage.scene()));
+        let renders: Vec<Render> = (0..NULL_RENDERS as u64)
+            .map(|seed| black.render(check, Mistakes::NONE, 3000 + seed, threads))
+            .collect();
+        let model = Plane::Image.model(&renders).widened(&models[0]);
+        if Decided::new(&decided[0].x, &model, alpha, 3).passes() {
+            return CheckResult {
+                images: Some(images),
+                ..result(Outcome::NotWritten(unwritten::part_6(check)))
+            };
+        }
     }
     let cells: usize = decided.iter().map(|d| d.x.len()).sum();
     let mut suspects: Vec<(Suspect, Vec<u8>)> = check

@@ -3,15 +3,16 @@
 
 use std::error::Error;
 use std::path::PathBuf;
+use std::process::ExitCode;
 use std::time::Duration;
 
 use clap::Parser;
 use indicatif::{ProgressBar, ProgressStyle};
 
 use super::values::{whole, AssignmentArg, Number};
-use crate::check::battery::{assignment_of, battery_of};
+use crate::check::battery::{assignment_of, battery_for};
 use crate::check::{
-    battery, judge, report, table, CheckResult, CheckScene, Outcome, Stage, Student, ALPHA,
+    judge, report, table, CheckResult, CheckScene, Outcome, RunError, Stage, Student, ALPHA,
 };
 use crate::course::Assignment;
 
@@ -50,9 +51,27 @@ pub struct CheckArgs {
     pub timeout: u64,
 }
 
-/// Runs the battery and prints the table; an error only where nothing can
-/// be checked (no output folder, no scene).
-pub fn check(args: &CheckArgs) -> Result<(), Box<dyn Error>> {
+/// What `check` exits with: 0 when every check that ran passed, 1 when
+/// one did not (failed, not written yet, or no image), 2 when the binary
+/// cannot be run at all (and, through clap, for a usage error).
+pub fn status(results: &[CheckResult], binary_runs: bool) -> ExitCode {
+    let failed = results.iter().any(|r| {
+        matches!(
+            r.outcome,
+            Outcome::Fail { .. } | Outcome::NotWritten(_) | Outcome::Error(_)
+        )
+    });
+    match (binary_runs, failed) {
+        (false, _) => ExitCode::from(2),
+        (true, true) => ExitCode::from(1),
+        (true, false) => ExitCode::SUCCESS,
+    }
+}
+
+/// Runs the battery, prints the table and says how it went
+/// ([`status`]); an error only where nothing can be checked (no output
+/// folder, no scene).
+pub fn check(args: &CheckArgs) -> Result<ExitCode, Box<dyn Error>> {
     let work = args.out.join("runs");
     std::fs::create_dir_all(&work).map_err(|e| format!("{}: {e}", work.display()))?;
     let student = Student {
@@ -60,20 +79,32 @@ pub fn check(args: &CheckArgs) -> Result<(), Box<dyn Error>> {
         work,
         timeout: Duration::from_secs(args.timeout),
     };
-    let checks = checks_for(args)?;
+    let (assignment, why) = assignment_for(args, &student)?;
+    let checks = battery_for(assignment, &args.parts);
+    crate::say_err!("checking a {} binary ({why})", assignment.name());
     // The scenes the checks render, each written once.
     let mut stages: Vec<(CheckScene, String, Stage)> = Vec::new();
     for which in CheckScene::ALL {
         if checks.iter().any(|c| c.scene == which) {
-            let (file, scene) = which.file(args.scenes.as_deref(), &args.out)?;
-            let file = std::path::absolute(&file)?;
-            let stage = which.stage(&file, scene, false)?;
+            let found = which.file(args.scenes.as_deref(), &args.out)?;
+            if let Some(warning) = &found.warning {
+                crate::say_err!("warning: {warning}");
+            }
+            let file = std::path::absolute(&found.path)?;
+            let stage = which.stage(&file, found.scene, false)?;
             stages.push((which, file.to_string_lossy().into_owned(), stage));
         }
     }
-    // A binary that cannot even print its usage fails every check with
-    // the reason, in the table and the report alike.
-    let capabilities = student.capabilities();
+    // What the binary supports, by trying each flag in a tiny render of
+    // the first scene; a binary that cannot even run fails every check
+    // with the reason, in the table and the report alike.
+    let map = stages
+        .iter()
+        .find_map(|(which, file, _)| which.environment_file(std::path::Path::new(file)));
+    let capabilities = match stages.first() {
+        Some((_, file, _)) => student.capabilities(file, map.as_deref()),
+        None => Err(RunError::NoChecks),
+    };
     let alpha = ALPHA / checks.len().max(1) as f64;
     let bar = ProgressBar::new(checks.len() as u64).with_style(
         ProgressStyle::with_template("{bar:30} {pos}/{len} {msg}").expect("a valid template"),
@@ -114,38 +145,59 @@ pub fn check(args: &CheckArgs) -> Result<(), Box<dyn Error>> {
     let path = report::write_report(&args.out, &page)
         .map_err(|e| format!("{}: {e}", args.out.join("report.html").display()))?;
     for r in &results {
-        if let Outcome::Fail { what, suspects, .. } = &r.outcome {
-            crate::say!("\npart {}, {}: {what}", r.check.part, r.check.name)?;
-            for s in suspects.iter().take(3) {
-                let fit = if s.fits { "fits" } else { "does not fit" };
-                crate::say!("  {} ({fit}; misfit {:.2} per cell)", s.mistake, s.misfit)?;
+        match &r.outcome {
+            Outcome::Fail { what, suspects, .. } => {
+                crate::say!("\npart {}, {}: {what}", r.check.part, r.check.name)?;
+                for s in suspects.iter().take(3) {
+                    let fit = if s.fits { "fits" } else { "does not fit" };
+                    crate::say!("  {} ({fit}; misfit {:.2} per cell)", s.mistake, s.misfit)?;
+                }
             }
+            Outcome::NotWritten(u) => crate::say!(
+                "\npart {}, {}: not written yet: {} in {} (part {}): {}",
+                r.check.part,
+                r.check.name,
+                u.function,
+                u.file,
+                u.part,
+                u.shows
+            )?,
+            _ => {}
         }
     }
     crate::say!("\nwrote {}", path.display())?;
-    Ok(())
+    Ok(status(&results, capabilities.is_ok()))
 }
 
-/// The checks the flags ask for: those of `--part`, or every check of the
-/// binary's assignment (`--assignment`, else as the parts imply); an
-/// error when the parts and the assignment disagree.
-fn checks_for(args: &CheckArgs) -> Result<Vec<crate::check::Check>, Box<dyn Error>> {
-    let implied = assignment_of(&args.parts).ok_or(
-        "--part names parts of both assignments (6 to 8 are 3-2's): check each binary on its own",
-    )?;
-    let assignment: Assignment = args.assignment.map_or(implied, Into::into);
-    if args.parts.is_empty() {
-        return Ok(battery_of(assignment));
+/// The assignment whose battery runs, and why: `--assignment`, else 3-2
+/// when a `--part` is 6 or more, else as the binary shows (a 3-2 binary
+/// renders an emissive mesh without light black at `-m 0`,
+/// [`Student::renders_lamps_as_quads`]); an error when `--assignment 3-1`
+/// names parts of 3-2.
+fn assignment_for(
+    args: &CheckArgs,
+    student: &Student,
+) -> Result<(Assignment, &'static str), Box<dyn Error>> {
+    let implied = assignment_of(&args.parts);
+    let three_two = || -> Result<bool, Box<dyn Error>> {
+        let probe = crate::check::scenes::write_glowing_box(&args.out)?;
+        Ok(student.renders_lamps_as_quads(&probe) == Some(true))
+    };
+    match (args.assignment.map(Assignment::from), implied) {
+        (Some(Assignment::PathTracer1), Some(_)) => {
+            Err("--assignment 3-1: parts 6 to 8 are 3-2's (a 3-2 binary has every part)".into())
+        }
+        (Some(a), _) => Ok((a, "--assignment")),
+        (None, Some(a)) => Ok((a, "--part names a part of 3-2")),
+        (None, None) if three_two()? => Ok((
+            Assignment::PathTracer2,
+            "its emissive meshes emit nothing, as in the 3-2 starter; --assignment 3-1 to say otherwise",
+        )),
+        (None, None) => Ok((
+            Assignment::PathTracer1,
+            "its emissive meshes glow, as in the 3-1 starter; --assignment 3-2 to say otherwise",
+        )),
     }
-    if assignment != implied {
-        return Err(format!(
-            "--assignment {}: the parts named are {}'s",
-            assignment.name(),
-            implied.name()
-        )
-        .into());
-    }
-    Ok(battery(&args.parts))
 }
 
 #[cfg(test)]
@@ -153,32 +205,84 @@ mod tests {
     use super::*;
 
     fn parse(words: &str) -> CheckArgs {
-        let words = std::iter::once("check").chain(words.split_whitespace());
+        let out = std::env::temp_dir().join("check-args-test");
+        let out = out.to_string_lossy().into_owned();
+        let words = std::iter::once("check")
+            .chain(words.split_whitespace())
+            .chain(["--out", out.as_str()]);
         CheckArgs::try_parse_from(words).unwrap()
     }
 
-    /// `--part` and `--assignment` pick the checks: 3-1's by default,
-    /// 3-2's for parts 6 to 8 or `--assignment 3-2`; parts of both, or an
-    /// assignment the parts contradict, are refused with a reason.
+    /// `--part` and `--assignment` pick the checks: the binary's own
+    /// assignment by default (this test's `s` does not run: 3-1), 3-2's
+    /// for parts 6 to 8 or `--assignment 3-2` (every part, the first five
+    /// as a 3-2 binary renders them); parts of 3-2 with `--assignment 3-1`
+    /// are refused with a reason.
     #[test]
     fn parts_and_assignment_pick_the_checks() {
-        let parts = |words: &str| -> Result<Vec<u8>, String> {
-            checks_for(&parse(words))
-                .map(|c| c.iter().map(|c| c.part).collect())
+        let parts = |words: &str| -> Result<(Assignment, Vec<u8>), String> {
+            let args = parse(words);
+            let student = Student {
+                binary: args.student.clone(),
+                work: std::env::temp_dir(),
+                timeout: Duration::from_secs(1),
+            };
+            assignment_for(&args, &student)
+                .map(|(a, _)| {
+                    (
+                        a,
+                        battery_for(a, &args.parts).iter().map(|c| c.part).collect(),
+                    )
+                })
                 .map_err(|e| e.to_string())
         };
-        assert_eq!(parts("--student s"), Ok(vec![2, 3, 3, 4, 4, 5]));
-        assert_eq!(parts("--student s --assignment 3-2"), Ok(vec![6, 6, 7, 8]));
-        assert_eq!(parts("--student s --part 8"), Ok(vec![8]));
+        use Assignment::{PathTracer1 as A1, PathTracer2 as A2};
+        assert_eq!(parts("--student s"), Ok((A1, vec![2, 3, 3, 4, 4, 5])));
+        assert_eq!(
+            parts("--student s --assignment 3-2"),
+            Ok((A2, vec![2, 3, 3, 4, 4, 5, 6, 6, 7, 8]))
+        );
+        assert_eq!(parts("--student s --part 8"), Ok((A2, vec![8])));
+        assert_eq!(
+            parts("--student s --part 5 --part 6"),
+            Ok((A2, vec![5, 6, 6]))
+        );
         assert_eq!(
             parts("--student s --part 3 --assignment 3-1"),
-            Ok(vec![3, 3])
+            Ok((A1, vec![3, 3]))
         );
-        assert!(parts("--student s --part 5 --part 6")
-            .unwrap_err()
-            .contains("both assignments"));
         assert!(parts("--student s --part 6 --assignment 3-1")
             .unwrap_err()
             .contains("3-2's"));
+    }
+
+    /// 0 when every check that ran passed (skipped ones aside), 1 when one
+    /// failed, was not written or gave no image, 2 when the binary does
+    /// not run.
+    #[test]
+    fn the_exit_status_says_how_the_battery_went() {
+        let check = crate::check::battery(&[3])[0];
+        let result = |outcome| CheckResult {
+            check,
+            outcome,
+            images: None,
+        };
+        let pass = result(Outcome::Pass {
+            statistic: 1.0,
+            threshold: 2.0,
+            region: 1.0,
+            region_threshold: 2.0,
+        });
+        let skipped = result(Outcome::Skipped("no -o".into()));
+        let error = result(Outcome::Error("it crashed".into()));
+        assert_eq!(
+            status(&[pass.clone(), skipped.clone()], true),
+            ExitCode::SUCCESS
+        );
+        assert_eq!(
+            status(&[pass.clone(), error.clone()], true),
+            ExitCode::from(1)
+        );
+        assert_eq!(status(&[pass, skipped], false), ExitCode::from(2));
     }
 }

@@ -17,9 +17,17 @@
 //!   so `T` translates by `G dir_to_camera + (0, 0, 1)`;
 //! - point light and sphere: a translation to the position or centre.
 //!
-//! Materials are CGL techniques (diffuse as `<lambert>`); the mesh is one
-//! geometry with a `<triangles>` element per material. Normals are not
-//! written: the course rebuilds them from the connectivity.
+//! Materials are CGL techniques (diffuse as `<lambert>`). The mesh is
+//! written as one `<geometry>` and one node per material, each with the
+//! vertices its triangles use and one `<polylist>` (with `<vcount>`): the
+//! course's loaders read only a geometry's first `<polylist>` (the 2023
+//! starters' read nothing else: a `<triangles>` element loads as an empty
+//! mesh, on which they crash; the 2025 starter's fall back to the first
+//! `<triangles>`) and only a node's first `<instance_material>`. Normals are
+//! not written: the course rebuilds them from the connectivity, within
+//! each geometry. Every camera, light, material, geometry and node has a
+//! `name` as well as an `id`: the course's loader copies both into
+//! strings and crashes on a missing one (a null `const char*`).
 
 use std::fmt::Write as _;
 use std::io::{self, Write};
@@ -157,12 +165,15 @@ pub fn write_scene_dae(scene: &Scene, out: &mut impl Write) -> io::Result<()> {
     let cam = &scene.camera;
     let _ = writeln!(
         doc,
-        r#"<library_cameras><camera id="cam"><optics><technique_common><perspective><xfov>{}</xfov><yfov>{}</yfov><znear>{}</znear><zfar>{}</zfar></perspective></technique_common></optics></camera></library_cameras>"#,
+        r#"<library_cameras><camera id="cam" name="cam"><optics><technique_common><perspective><xfov>{}</xfov><yfov>{}</yfov><znear>{}</znear><zfar>{}</zfar></perspective></technique_common></optics></camera></library_cameras>"#,
         cam.hfov_deg, cam.vfov_deg, cam.znear, cam.zfar
     );
     doc += "<library_lights>";
     for (i, (body, _)) in lights.iter().enumerate() {
-        let _ = write!(doc, r#"<light id="light{i}">{body}</light>"#);
+        let _ = write!(
+            doc,
+            r#"<light id="light{i}" name="light{i}">{body}</light>"#
+        );
     }
     doc += "</library_lights>\n<library_effects>";
     for (i, body) in effects.iter().enumerate() {
@@ -172,7 +183,7 @@ pub fn write_scene_dae(scene: &Scene, out: &mut impl Write) -> io::Result<()> {
     for i in 0..effects.len() {
         let _ = write!(
             doc,
-            r##"<material id="mat{i}"><instance_effect url="#fx{i}"/></material>"##
+            r##"<material id="mat{i}" name="mat{i}"><instance_effect url="#fx{i}"/></material>"##
         );
     }
     doc += "</library_materials>\n<library_geometries>";
@@ -181,7 +192,7 @@ pub fn write_scene_dae(scene: &Scene, out: &mut impl Write) -> io::Result<()> {
     for (i, sphere) in scene.spheres.iter().enumerate() {
         let _ = write!(
             doc,
-            r#"<geometry id="sphere{i}"><extra><technique profile="CGL"><sphere><radius>{}</radius></sphere></technique></extra></geometry>"#,
+            r#"<geometry id="sphere{i}" name="sphere{i}"><extra><technique profile="CGL"><sphere><radius>{}</radius></sphere></technique></extra></geometry>"#,
             sphere.radius
         );
     }
@@ -189,13 +200,13 @@ pub fn write_scene_dae(scene: &Scene, out: &mut impl Write) -> io::Result<()> {
     let camera_t = to_file(cam.dir_to_camera) + Vec3::Z;
     let _ = writeln!(
         doc,
-        r##"<node id="camera">{}<instance_camera url="#cam"/></node>"##,
+        r##"<node id="camera" name="camera">{}<instance_camera url="#cam"/></node>"##,
         translation(camera_t)
     );
     for (i, (_, m)) in lights.iter().enumerate() {
         let _ = writeln!(
             doc,
-            r##"<node id="light{i}-node">{m}<instance_light url="#light{i}"/></node>"##
+            r##"<node id="light{i}-node" name="light{i}-node">{m}<instance_light url="#light{i}"/></node>"##
         );
     }
     let instance = |symbol: String, material: u32| {
@@ -204,22 +215,17 @@ pub fn write_scene_dae(scene: &Scene, out: &mut impl Write) -> io::Result<()> {
     let bind = |instances: String| {
         format!("<bind_material><technique_common>{instances}</technique_common></bind_material>")
     };
-    if !scene.mesh.triangles.is_empty() {
-        let instances: String = mesh_materials
-            .iter()
-            .copied()
-            .map(|m| instance(format!("m{m}"), m))
-            .collect();
+    for &m in &mesh_materials {
         let _ = writeln!(
             doc,
-            r##"<node id="mesh"><instance_geometry url="#mesh">{}</instance_geometry></node>"##,
-            bind(instances)
+            r##"<node id="mesh-m{m}-node" name="mesh-m{m}-node"><instance_geometry url="#mesh-m{m}">{}</instance_geometry></node>"##,
+            bind(instance(format!("m{m}"), m))
         );
     }
     for (i, sphere) in scene.spheres.iter().enumerate() {
         let _ = writeln!(
             doc,
-            r##"<node id="sphere{i}-node">{}<instance_geometry url="#sphere{i}">{}</instance_geometry></node>"##,
+            r##"<node id="sphere{i}-node" name="sphere{i}-node">{}<instance_geometry url="#sphere{i}">{}</instance_geometry></node>"##,
             translation(to_file(sphere.center)),
             bind(instance(format!("s{i}"), sphere.material))
         );
@@ -236,45 +242,53 @@ fn used_materials(scene: &Scene) -> Vec<u32> {
     used
 }
 
-/// The mesh: its positions in file space and a `<triangles>` element per
-/// material of `materials` (those its triangles use).
+/// The mesh: per material of `materials` (those its triangles use), a
+/// geometry `mesh-m{material}` with the positions its triangles use, in
+/// file space, and one `<polylist>` of them.
 fn write_mesh(scene: &Scene, materials: &[u32], doc: &mut String) {
     let mesh = &scene.mesh;
-    if mesh.triangles.is_empty() {
-        return;
-    }
-    let n = mesh.positions.len();
-    let _ = write!(
-        doc,
-        r#"<geometry id="mesh"><mesh><source id="pos"><float_array id="pos-array" count="{}">"#,
-        3 * n
-    );
-    for &p in &mesh.positions {
-        let _ = write!(doc, "{} ", triple(to_file(p)));
-    }
-    let _ = write!(
-        doc,
-        r##"</float_array><technique_common><accessor source="#pos-array" count="{n}" stride="3"/></technique_common></source><vertices id="vtx"><input semantic="POSITION" source="#pos"/></vertices>"##
-    );
     for &m in materials {
-        let triangles: Vec<&[u32; 3]> = mesh
+        let triangles: Vec<[u32; 3]> = mesh
             .triangles
             .iter()
             .zip(&mesh.materials)
             .filter(|(_, &tm)| tm == m)
-            .map(|(t, _)| t)
+            .map(|(t, _)| *t)
             .collect();
+        // The vertices these triangles use, numbered anew in order of use.
+        let mut local = std::collections::HashMap::new();
+        let mut used = Vec::new();
+        let indices: Vec<u32> = triangles
+            .iter()
+            .flatten()
+            .map(|&v| {
+                *local.entry(v).or_insert_with(|| {
+                    used.push(v);
+                    used.len() as u32 - 1
+                })
+            })
+            .collect();
+        let n = used.len();
         let _ = write!(
             doc,
-            r##"<triangles material="m{m}" count="{}"><input semantic="VERTEX" source="#vtx" offset="0"/><p>"##,
+            r#"<geometry id="mesh-m{m}" name="mesh-m{m}"><mesh><source id="pos-m{m}"><float_array id="pos-m{m}-array" count="{}">"#,
+            3 * n
+        );
+        for &v in &used {
+            let _ = write!(doc, "{} ", triple(to_file(mesh.positions[v as usize])));
+        }
+        let _ = write!(
+            doc,
+            r##"</float_array><technique_common><accessor source="#pos-m{m}-array" count="{n}" stride="3"/></technique_common></source><vertices id="vtx-m{m}"><input semantic="POSITION" source="#pos-m{m}"/></vertices><polylist material="m{m}" count="{}"><input semantic="VERTEX" source="#vtx-m{m}" offset="0"/><vcount>"##,
             triangles.len()
         );
-        for [a, b, c] in triangles {
-            let _ = write!(doc, "{a} {b} {c} ");
+        doc.push_str(&"3 ".repeat(triangles.len()));
+        doc.push_str("</vcount><p>");
+        for v in indices {
+            let _ = write!(doc, "{v} ");
         }
-        doc.push_str("</p></triangles>");
+        doc.push_str("</p></polylist></mesh></geometry>");
     }
-    doc.push_str("</mesh></geometry>");
 }
 
 #[cfg(test)]
@@ -369,6 +383,48 @@ mod tests {
             assert!(
                 (c.hfov_deg - d.hfov_deg).abs() < 1e-4 && (c.vfov_deg - d.vfov_deg).abs() < 1e-4
             );
+        }
+    }
+
+    /// Every mesh geometry holds one `<polylist>` (the only element the
+    /// 2023 loaders read; they read a geometry's first), its `<vcount>`
+    /// one 3 a triangle, each mesh node binds one material, and every
+    /// element the course's loader names has a `name`.
+    #[test]
+    fn meshes_are_one_polylist_a_geometry_and_everything_is_named() {
+        let scene = builtin::mesh_balls_box();
+        let mut text = Vec::new();
+        write_scene_dae(&scene, &mut text).unwrap();
+        let text = String::from_utf8(text).unwrap();
+        let doc = roxmltree::Document::parse(&text).unwrap();
+        let named = |n: roxmltree::Node, name: &str| n.has_tag_name(name);
+        let meshes: Vec<_> = doc.descendants().filter(|n| named(*n, "mesh")).collect();
+        assert_eq!(meshes.len(), used_materials(&scene).len());
+        let mut triangles = 0;
+        for mesh in meshes {
+            assert!(!mesh.descendants().any(|n| named(n, "triangles")));
+            let lists: Vec<_> = mesh.children().filter(|n| named(*n, "polylist")).collect();
+            assert_eq!(lists.len(), 1);
+            let count: usize = lists[0].attribute("count").unwrap().parse().unwrap();
+            let vcount = lists[0].children().find(|n| named(*n, "vcount")).unwrap();
+            let sizes: Vec<&str> = vcount.text().unwrap().split_whitespace().collect();
+            assert_eq!(sizes.len(), count);
+            assert!(sizes.iter().all(|s| *s == "3"));
+            triangles += count;
+        }
+        assert_eq!(triangles, scene.mesh.triangles.len());
+        for element in doc.descendants().filter(|n| {
+            ["camera", "light", "material", "geometry", "node"]
+                .iter()
+                .any(|name| named(*n, name))
+        }) {
+            assert!(element.attribute("name").is_some(), "{element:?}");
+        }
+        for node in doc.descendants().filter(|n| named(*n, "instance_geometry")) {
+            let bound = node
+                .descendants()
+                .filter(|n| named(*n, "instance_material"));
+            assert_eq!(bound.count(), 1);
         }
     }
 

@@ -30,6 +30,17 @@ pub fn script(dir: &Path, name: &str, body: &str) -> PathBuf {
     path
 }
 
+/// A script that refuses the flags `refused` as the course's getopt does
+/// a flag it does not know (the usage, exit status 1) and otherwise runs
+/// `body`.
+pub fn refusing(dir: &Path, name: &str, refused: &[&str], body: &str) -> PathBuf {
+    let cases = refused.join("|");
+    let guard = format!(
+        "for a in \"$@\"; do case \"$a\" in {cases}) echo 'Usage: pathtracer [options] <scenefile>'; exit 1;; esac; done"
+    );
+    script(dir, name, &format!("{guard}\n{body}"))
+}
+
 /// A stand-in student of assignment 3-1: the course's renderer with
 /// `mistake`, at `seed`.
 pub fn stand_in(dir: &Path, mistake: Option<Mistake>, seed: u64) -> PathBuf {
@@ -85,9 +96,9 @@ impl Bench {
         let scenes: Vec<(CheckScene, String, &'static Stage)> = CheckScene::ALL
             .into_iter()
             .map(|which| {
-                let (file, scene) = which.file(Some(&empty), dir.path()).unwrap();
-                let stage = shared_stage(which, &file, scene);
-                (which, file.to_string_lossy().into_owned(), stage)
+                let found = which.file(Some(&empty), dir.path()).unwrap();
+                let stage = shared_stage(which, &found.path, found.scene);
+                (which, found.path.to_string_lossy().into_owned(), stage)
             })
             .collect();
         Bench {
@@ -96,6 +107,12 @@ impl Bench {
             scenes,
             dir,
         }
+    }
+
+    /// The sky scene's environment map, to try `-e` with.
+    pub fn map(&self) -> Option<PathBuf> {
+        let (_, file, _) = self.scenes.iter().find(|s| s.0 == CheckScene::Sky)?;
+        CheckScene::Sky.environment_file(Path::new(file))
     }
 
     /// The file and stage of `check`'s scene.
@@ -118,7 +135,9 @@ impl Bench {
     /// battery's rate.
     pub fn run(&self, binary: PathBuf, checks: &[Check]) -> Vec<CheckResult> {
         let student = self.student(binary, Duration::from_secs(120));
-        let capabilities = student.capabilities().unwrap();
+        let capabilities = student
+            .capabilities(&self.scene_file, self.map().as_deref())
+            .unwrap();
         checks
             .iter()
             .map(|c| {

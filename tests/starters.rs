@@ -1,0 +1,257 @@
+//! The checker against the course's own binaries: the three starters of
+//! `CS184_STARTER_DIR` (the 2023 and 2025 3-1 starters, the 2023 3-2
+//! starter with the staff's precompiled 3-1 library), built here with
+//! CMake as their README says, into `target/course-starters/`. Without
+//! the variable the tests skip with a line, except under `CI=true`, where
+//! they fail: CI points it at `../shared/course`.
+//!
+//! - every scene the checker exports loads in every starter, whole;
+//! - a bare 3-1 starter gets "not written yet" for every check, without a
+//!   crash, and `check` exits with 1;
+//! - the 3-2 starter's parts 7 and 8, still the starter's, are "not
+//!   written yet";
+//! - a binary that does not exist makes `check` exit with 2.
+
+#![cfg(unix)]
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::sync::OnceLock;
+
+use pathtracer::check::scenes::{write_glowing_box, CheckScene};
+use pathtracer::scene::{self, Light};
+
+const CHECK: &str = env!("CARGO_BIN_EXE_check");
+
+/// The starters, by folder name.
+const STARTERS: [&str; 3] = ["p3_1-sp23", "p3_1-2025", "p3_2-sp23"];
+
+/// The built starters' binaries, in [`STARTERS`]' order; `None` (after a
+/// line saying so) when `CS184_STARTER_DIR` is not set outside CI.
+fn starters() -> Option<&'static [PathBuf]> {
+    static BUILT: OnceLock<Option<Vec<PathBuf>>> = OnceLock::new();
+    BUILT
+        .get_or_init(|| {
+            let Some(dir) = std::env::var_os("CS184_STARTER_DIR") else {
+                assert!(
+                    std::env::var("CI").as_deref() != Ok("true"),
+                    "CS184_STARTER_DIR is not set: CI must point it at ../shared/course"
+                );
+                eprintln!("skipped: set CS184_STARTER_DIR to the course's starters");
+                return None;
+            };
+            Some(
+                STARTERS
+                    .iter()
+                    .map(|s| build(&PathBuf::from(&dir).join(s)))
+                    .collect(),
+            )
+        })
+        .as_deref()
+}
+
+/// Builds the starter at `source` (copied to a writable place first) and
+/// returns its `pathtracer`, reusing an earlier build.
+fn build(source: &Path) -> PathBuf {
+    let name = source.file_name().unwrap().to_string_lossy().into_owned();
+    let root = Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join("course-starters")
+        .join(&name);
+    let binary = root.join("build").join("pathtracer");
+    if binary.exists() {
+        return binary;
+    }
+    let tree = root.join("src");
+    let _ = std::fs::remove_dir_all(&root);
+    std::fs::create_dir_all(&root).unwrap();
+    let copied = Command::new("cp")
+        .arg("-r")
+        .arg(source)
+        .arg(&tree)
+        .status()
+        .unwrap();
+    assert!(copied.success(), "copying {}", source.display());
+    let _ = Command::new("chmod")
+        .args(["-R", "u+w"])
+        .arg(&tree)
+        .status();
+    let build = root.join("build");
+    let run = |args: &[&str]| {
+        let out = Command::new("cmake").args(args).output().expect("cmake");
+        assert!(
+            out.status.success(),
+            "cmake {args:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    };
+    let (tree_s, build_s) = (tree.to_string_lossy(), build.to_string_lossy());
+    run(&[
+        "-S",
+        &tree_s,
+        "-B",
+        &build_s,
+        "-DCMAKE_BUILD_TYPE=Release",
+        "-DCMAKE_C_FLAGS=-fcommon -w",
+        "-DCMAKE_CXX_FLAGS=-w",
+        "-DCMAKE_BUILD_RPATH=$ORIGIN",
+        "-DCMAKE_POLICY_VERSION_MINIMUM=3.5",
+    ]);
+    run(&["--build", &build_s, "--target", "pathtracer", "-j", "2"]);
+    let staff = tree.join("libs/x64_linux/libpt31.so");
+    if staff.exists() {
+        std::fs::copy(&staff, build.join("libpt31.so")).unwrap();
+    }
+    assert!(binary.exists(), "{} was not built", binary.display());
+    binary
+}
+
+/// Runs `check` with `args`: its exit code and its standard output.
+fn check(args: &[&str]) -> (Option<i32>, String) {
+    let out = Command::new(CHECK).args(args).output().unwrap();
+    (
+        out.status.code(),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+    )
+}
+
+/// Every scene the checker writes loads whole in every starter: it exits
+/// 0, writes its image, and builds its BVH over every triangle and
+/// sphere (a 3-2 starter adds each area light's two triangles).
+#[test]
+fn every_exported_scene_loads_in_every_starter() {
+    let Some(binaries) = starters() else { return };
+    let dir = tempfile::tempdir().unwrap();
+    let empty = dir.path().join("no-scenes");
+    std::fs::create_dir_all(&empty).unwrap();
+    let mut files: Vec<PathBuf> = CheckScene::ALL
+        .iter()
+        .map(|which| which.file(Some(&empty), dir.path()).unwrap().path)
+        .collect();
+    files.push(write_glowing_box(dir.path()).unwrap());
+    for (name, binary) in STARTERS.iter().zip(binaries) {
+        for file in &files {
+            let scene = scene::load(file).unwrap();
+            let areas = scene
+                .lights
+                .iter()
+                .filter(|l| matches!(l, Light::Area { .. }))
+                .count();
+            let extra = if name.starts_with("p3_2") {
+                2 * areas
+            } else {
+                0
+            };
+            let expected = scene.mesh.triangles.len() + scene.spheres.len() + extra;
+            let image = dir.path().join("probe.png");
+            let _ = std::fs::remove_file(&image);
+            let mut args: Vec<String> = "-t 1 -s 1 -l 1 -m 0 -r 8 6 -f"
+                .split(' ')
+                .map(String::from)
+                .collect();
+            args.push(image.to_string_lossy().into_owned());
+            if let Some(map) = CheckScene::Sky
+                .environment_file(file)
+                .filter(|m| m.exists())
+            {
+                args.extend(["-e".to_string(), map.to_string_lossy().into_owned()]);
+            }
+            args.push(file.to_string_lossy().into_owned());
+            let out = Command::new(binary)
+                .args(&args)
+                .current_dir(dir.path())
+                .output()
+                .unwrap();
+            let log = String::from_utf8_lossy(&out.stdout);
+            assert!(
+                out.status.success(),
+                "{name} on {}: {:?}",
+                file.display(),
+                out.status
+            );
+            assert!(
+                image.exists(),
+                "{name} wrote no image of {}",
+                file.display()
+            );
+            let said = format!("Building BVH from {expected} primitives");
+            assert!(log.contains(&said), "{name} on {}: {log}", file.display());
+        }
+    }
+}
+
+/// A bare 3-1 starter: every check that runs says "not written yet" and
+/// names `raytrace_pixel`, none crashes, and `check` exits with 1.
+#[test]
+fn a_bare_3_1_starter_is_not_written_yet_everywhere() {
+    let Some(binaries) = starters() else { return };
+    for binary in &binaries[..2] {
+        let out = tempfile::tempdir().unwrap();
+        let (code, table) = check(&[
+            "--student",
+            &binary.to_string_lossy(),
+            "--out",
+            &out.path().to_string_lossy(),
+        ]);
+        assert_eq!(code, Some(1), "{table}");
+        let rows: Vec<&str> = table
+            .lines()
+            .skip(1)
+            .take_while(|l| !l.is_empty())
+            .collect();
+        assert_eq!(rows.len(), 6, "{table}");
+        for row in rows {
+            assert!(
+                row.contains("not written") && row.contains("raytrace_pixel")
+                    || row.contains("skipped"),
+                "{row}"
+            );
+        }
+    }
+}
+
+/// The 3-2 starter's environment light and thin lens are the starter's:
+/// "not written yet", each naming its function; a binary that does not
+/// exist is a usage error (2).
+#[test]
+fn the_3_2_starter_has_parts_7_and_8_not_written_yet() {
+    let Some(binaries) = starters() else { return };
+    let out = tempfile::tempdir().unwrap();
+    let out = out.path().to_string_lossy().into_owned();
+    let student = binaries[2].to_string_lossy().into_owned();
+    // The course's scenes where there are any: the project's own box
+    // renders with black walls in a 3-2 binary (see the closing note of
+    // issue 51's first stop), which hides the one-colour image of part 8.
+    let mut args = vec![
+        "--student",
+        &student,
+        "--out",
+        &out,
+        "--part",
+        "7",
+        "--part",
+        "8",
+    ];
+    let roots = pathtracer::scene::course_files::roots();
+    let scenes = roots.first().map(|r| r.to_string_lossy().into_owned());
+    if let Some(scenes) = &scenes {
+        args.extend(["--scenes", scenes]);
+    }
+    let (code, table) = check(&args);
+    assert_eq!(code, Some(1), "{table}");
+    let row = |part: &str| {
+        table
+            .lines()
+            .find(|l| l.starts_with(part))
+            .unwrap_or_default()
+    };
+    assert!(
+        row("7 ").contains("not written") && row("7 ").contains("EnvironmentLight"),
+        "{table}"
+    );
+    assert!(
+        row("8 ").contains("not written") && row("8 ").contains("thin_lens"),
+        "{table}"
+    );
+    let (code, _) = check(&["--student", "/no/such/binary", "--out", &out, "--part", "3"]);
+    assert_eq!(code, Some(2));
+}
