@@ -13,7 +13,7 @@
 //!   [`scan`], its test of one region;
 //! - [`rates`]: part 5's sample-rate image (`NAME_rate.png`) read back
 //!   as the fraction of samples each pixel took, `r = (1 + R - B) / 2`;
-//! - [`verdict`]: what differs and where, and which mistakes fit;
+//! - [`verdict`]: what differs and where ([`words`]), and which mistakes fit;
 //! - [`patterns`]: single-pixel patterns of a failed image (holes, acne,
 //!   fireflies) against a correct render's own;
 //! - [`unwritten`]: the images of a starter's functions left as handed
@@ -44,6 +44,7 @@ pub mod stats;
 pub mod student;
 pub mod unwritten;
 pub mod verdict;
+pub mod words;
 
 use std::path::{Path, PathBuf};
 

@@ -149,10 +149,9 @@ impl CheckScene {
     /// `dae/` keeps its scenes in subfolders) when there, else the
     /// project's own written to `out/scenes/`.
     pub fn file(self, scenes: Option<&Path>, out: &Path) -> Result<SceneFile, String> {
-        let from_env = std::env::var_os(course_files::ENV_VAR)
-            .filter(|v| !v.is_empty())
-            .map(PathBuf::from);
-        let root = scenes.map(Path::to_path_buf).or(from_env);
+        let root = scenes
+            .map(Path::to_path_buf)
+            .or_else(course_files::env_root);
         let mut warning = None;
         if let Some(name) = self.course_file() {
             if let Some(path) = root
@@ -179,12 +178,7 @@ impl CheckScene {
                 ),
             });
         }
-        let folder = out.join("scenes");
-        std::fs::create_dir_all(&folder).map_err(|e| format!("{}: {e}", folder.display()))?;
-        let path = folder.join(self.file_name());
-        let mut text = Vec::new();
-        export_scene::write_scene_dae(&self.own(), &mut text).map_err(|e| e.to_string())?;
-        std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
+        let path = write_own(&self.own(), out, self.file_name())?;
         if let Some(map_file) = self.environment_file(&path) {
             super::sky::write_exr(&map_file)?;
         }
@@ -218,11 +212,16 @@ pub fn glowing_box() -> Scene {
 
 /// Writes [`glowing_box`] into `out/scenes/glowing-box.dae`.
 pub fn write_glowing_box(out: &Path) -> Result<PathBuf, String> {
+    write_own(&glowing_box(), out, "glowing-box.dae")
+}
+
+/// Writes `scene` in the course's dialect as `out/scenes/name`.
+fn write_own(scene: &Scene, out: &Path, name: &str) -> Result<PathBuf, String> {
     let folder = out.join("scenes");
     std::fs::create_dir_all(&folder).map_err(|e| format!("{}: {e}", folder.display()))?;
-    let path = folder.join("glowing-box.dae");
+    let path = folder.join(name);
     let mut text = Vec::new();
-    export_scene::write_scene_dae(&glowing_box(), &mut text).map_err(|e| e.to_string())?;
+    export_scene::write_scene_dae(scene, &mut text).map_err(|e| e.to_string())?;
     std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
     Ok(path)
 }

@@ -7,7 +7,7 @@
 //! tests that judge the same checks many times.
 
 use std::collections::HashMap;
-use std::sync::Mutex;
+use std::sync::{Mutex, OnceLock};
 
 use super::battery::{Check, SIZE};
 use super::rates;
@@ -42,6 +42,8 @@ pub struct Stage {
     accel: WideBvhAccel,
     /// The environment map lighting the scene (`-e`), if any.
     environment: Option<EnvironmentLight>,
+    /// The starter's first-hit shadings, made when first asked for.
+    shadings: OnceLock<Shadings>,
     /// The images rendered so far, when the stage keeps them
     /// ([`Stage::remembering`]), by check, mistakes and seed.
     kept: Option<Mutex<HashMap<String, Render>>>,
@@ -56,6 +58,7 @@ impl Stage {
             scene,
             camera,
             environment: None,
+            shadings: OnceLock::new(),
             kept: None,
         }
     }
@@ -85,17 +88,20 @@ impl Stage {
     }
 
     /// The starter's first-hit shadings of this stage
-    /// ([`super::unwritten::Shadings`]), from each pixel's centre ray.
-    pub fn shadings(&self) -> Shadings {
+    /// ([`super::unwritten::Shadings`]), from each pixel's centre ray;
+    /// made once, for every check of the stage.
+    pub fn shadings(&self) -> &Shadings {
         let (w, h) = (SIZE.0 as usize, SIZE.1 as usize);
-        Shadings::new((0..w * h).map(|k| {
-            let (x, row) = (k % w, k / w);
-            let ray = self.camera.ray(
-                (x as f32 + 0.5) / w as f32,
-                1.0 - (row as f32 + 0.5) / h as f32,
-            );
-            (ray.dir, self.accel.intersect(&ray).map(|hit| hit.n))
-        }))
+        self.shadings.get_or_init(|| {
+            Shadings::new((0..w * h).map(|k| {
+                let (x, row) = (k % w, k / w);
+                let ray = self.camera.ray(
+                    (x as f32 + 0.5) / w as f32,
+                    1.0 - (row as f32 + 0.5) / h as f32,
+                );
+                (ray.dir, self.accel.intersect(&ray).map(|hit| hit.n))
+            }))
+        })
     }
 
     /// What a correct course solution (with `mistakes`) writes for

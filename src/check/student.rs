@@ -61,8 +61,6 @@ pub enum RunError {
         expected: (u32, u32),
         found: (u32, u32),
     },
-    /// No check was asked for, so nothing was run.
-    NoChecks,
 }
 
 impl fmt::Display for RunError {
@@ -76,7 +74,6 @@ impl fmt::Display for RunError {
             RunError::Unreadable(p, e) => {
                 write!(f, "{}: not a PNG it could read: {e}", p.display())
             }
-            RunError::NoChecks => write!(f, "no check to run"),
             RunError::WrongSize { expected, found } => write!(
                 f,
                 "its image is {}x{}, the command asked for {}x{}",

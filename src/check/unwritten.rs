@@ -156,16 +156,24 @@ pub const STAMP: (usize, usize) = (64, 352);
 
 /// `image` (8-bit, three a pixel, [`SIZE`]) with the stamp's pixels
 /// ([`STAMP`]) replaced by `fill`'s at the same place.
-pub fn without_stamp(image: &[u8], fill: impl Fn(usize, usize) -> [u8; 3]) -> Vec<u8> {
+pub fn stamp_from(image: &[u8], fill: &[u8]) -> Vec<u8> {
     let width = SIZE.0 as usize;
     let mut out = image.to_vec();
     for (k, pixel) in out.chunks_mut(3).enumerate() {
-        let (x, y) = (k % width, k / width);
-        if x < STAMP.0 && y >= STAMP.1 {
-            pixel.copy_from_slice(&fill(x, y));
+        if k % width < STAMP.0 && k / width >= STAMP.1 {
+            pixel.copy_from_slice(&fill[3 * k..3 * k + 3]);
         }
     }
     out
+}
+
+/// `image` with the stamp's pixels replaced by the row above it, for the
+/// placeholders' rules.
+pub fn stamp_from_row_above(image: &[u8]) -> Vec<u8> {
+    let row = 3 * SIZE.0 as usize;
+    let above = &image[(STAMP.1 - 1) * row..STAMP.1 * row];
+    let fill: Vec<u8> = above.iter().copied().cycle().take(image.len()).collect();
+    stamp_from(image, &fill)
 }
 
 /// The starter function whose placeholder `image` (8-bit, three a pixel,

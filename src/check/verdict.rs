@@ -10,6 +10,7 @@ use super::scan::{scan, Scan, WINDOW};
 use super::stats::{self, chi_square_quantile, NullModel, BLOCK};
 use super::student::{Capabilities, Student};
 use super::unwritten;
+use super::words::{describe, differing_blocks};
 use crate::course::Assignment;
 use crate::math::{luminance, Rgb};
 use crate::mistakes::Mistakes;
@@ -186,30 +187,23 @@ pub fn judge(
             }
         }
     }
-    if check.assignment == Assignment::PathTracer2 {
-        // The staff library's stamp is no part of the image: for the
-        // placeholders, the row above it stands in.
-        let width = SIZE.0 as usize;
-        let above = written.image.clone();
-        written.image = unwritten::without_stamp(&written.image, |x, _| {
-            let k = 3 * ((unwritten::STAMP.1 - 1) * width + x);
-            [above[k], above[k + 1], above[k + 2]]
-        });
+    // The staff library's stamp is no part of a 3-2 image: for the
+    // placeholders the row above it stands in, for the tests the
+    // correct renders' mean.
+    let stamped = check.assignment == Assignment::PathTracer2;
+    if stamped {
+        written.image = unwritten::stamp_from_row_above(&written.image);
     }
-    if let Some(u) = unwritten::placeholder(check, &written.image, &stage.shadings()) {
+    if let Some(u) = unwritten::placeholder(check, &written.image, stage.shadings()) {
         return result(Outcome::NotWritten(u));
     }
     let renders: Vec<Render> = (0..NULL_RENDERS as u64)
         .map(|seed| stage.render(check, Mistakes::NONE, 1000 + seed, threads))
         .collect();
-    if check.assignment == Assignment::PathTracer2 {
-        // Nor is it judged: there, the correct renders' mean stands in.
-        let mean = mean_image(&renders.iter().map(|r| r.image.clone()).collect::<Vec<_>>());
-        let width = SIZE.0 as usize;
-        written.image = unwritten::without_stamp(&written.image, |x, y| {
-            let k = 3 * (y * width + x);
-            [mean[k], mean[k + 1], mean[k + 2]]
-        });
+    let images_of: Vec<Vec<u8>> = renders.iter().map(|r| r.image.clone()).collect();
+    let reference = mean_image(&images_of);
+    if stamped {
+        written.image = unwritten::stamp_from(&written.image, &reference);
     }
     let planes = Plane::of(check);
     let alpha = alpha / planes.len() as f64;
@@ -219,9 +213,8 @@ pub fn judge(
         .zip(&models)
         .map(|(p, m)| Decided::new(&p.cells(&written), m, alpha, p.channels()))
         .collect();
-    let images_of: Vec<Vec<u8>> = renders.iter().map(|r| r.image.clone()).collect();
     let mut images = CheckImages {
-        reference: mean_image(&images_of),
+        reference,
         ratio: block_ratios(&decided[0].x, &models[0].mean),
         student: written.image.clone(),
         suspects: Vec::new(),
@@ -383,51 +376,4 @@ fn block_ratios(x: &[f64], mean: &[f64]) -> Vec<f64> {
             (a, b) => (a / b).powf(2.2),
         })
         .collect()
-}
-
-/// What differs, in words: the brightness ratio (linear, from the display
-/// values' ratio to the power 2.2) and where the cells that differ most lie.
-fn describe(x: &[f64], mean: &[f64], z: &[f64]) -> String {
-    let (sx, sm): (f64, f64) = (x.iter().sum(), mean.iter().sum());
-    let ratio = if sm > 0.0 {
-        (sx / sm).powf(2.2)
-    } else {
-        f64::INFINITY
-    };
-    let (share, place) = differing_blocks(z, 3);
-    format!(
-        "{:.2} times as bright as the course's image (radiance); {:.0} % of the 16 x 16 blocks differ, {place}",
-        ratio,
-        100.0 * share
-    )
-}
-
-/// The share of cells (`channels` a block) more than 4 standard errors
-/// off, and where they lie, in words.
-fn differing_blocks(z: &[f64], channels: usize) -> (f64, String) {
-    let bw = SIZE.0.div_ceil(BLOCK) as usize;
-    let bh = SIZE.1.div_ceil(BLOCK) as usize;
-    let far: Vec<usize> = (0..z.len()).filter(|&i| z[i] > 4.0).collect();
-    let share = far.len() as f64 / z.len().max(1) as f64;
-    let (mut cx, mut cy) = (0.0, 0.0);
-    for &i in &far {
-        let b = i / channels;
-        cx += (b % bw) as f64 / bw as f64;
-        cy += (b / bw) as f64 / bh as f64;
-    }
-    let n = far.len().max(1) as f64;
-    let (cx, cy) = (cx / n, cy / n);
-    let third = |v: f64, names: [&'static str; 3]| names[((v * 3.0) as usize).min(2)];
-    let place = if far.is_empty() {
-        "no block alone far off: a small difference spread over the image".to_string()
-    } else if share > 0.6 {
-        "all over the image".to_string()
-    } else {
-        format!(
-            "mostly {} {}",
-            third(cy, ["top", "middle", "bottom"]),
-            third(cx, ["left", "centre", "right"])
-        )
-    };
-    (share, place)
 }

@@ -11,9 +11,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 
 use super::values::{whole, AssignmentArg, Number};
 use crate::check::battery::{assignment_of, battery_for};
-use crate::check::{
-    judge, report, table, CheckResult, CheckScene, Outcome, RunError, Stage, Student, ALPHA,
-};
+use crate::check::{judge, report, table, CheckResult, CheckScene, Outcome, Stage, Student, ALPHA};
 use crate::course::Assignment;
 
 /// Check your own course renderer: runs it through the course's command
@@ -81,6 +79,14 @@ pub fn check(args: &CheckArgs) -> Result<ExitCode, Box<dyn Error>> {
     };
     let (assignment, why) = assignment_for(args, &student)?;
     let checks = battery_for(assignment, &args.parts);
+    if checks.is_empty() {
+        return Err(format!(
+            "no check of part {:?} for a {} binary (part 1 has none of its own yet)",
+            args.parts,
+            assignment.name()
+        )
+        .into());
+    }
     crate::say_err!("checking a {} binary ({why})", assignment.name());
     // The scenes the checks render, each written once.
     let mut stages: Vec<(CheckScene, String, Stage)> = Vec::new();
@@ -101,10 +107,8 @@ pub fn check(args: &CheckArgs) -> Result<ExitCode, Box<dyn Error>> {
     let map = stages
         .iter()
         .find_map(|(which, file, _)| which.environment_file(std::path::Path::new(file)));
-    let capabilities = match stages.first() {
-        Some((_, file, _)) => student.capabilities(file, map.as_deref()),
-        None => Err(RunError::NoChecks),
-    };
+    let (_, first, _) = &stages[0];
+    let capabilities = student.capabilities(first, map.as_deref());
     let alpha = ALPHA / checks.len().max(1) as f64;
     let bar = ProgressBar::new(checks.len() as u64).with_style(
         ProgressStyle::with_template("{bar:30} {pos}/{len} {msg}").expect("a valid template"),

@@ -32,13 +32,17 @@ pub const FALLBACK: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/scene
 /// keeps its scenes one level down).
 const MAX_DEPTH: usize = 4;
 
+/// `$CS184_SCENES` when it is set and not empty (a folder or not).
+pub fn env_root() -> Option<PathBuf> {
+    std::env::var_os(ENV_VAR)
+        .filter(|v| !v.is_empty())
+        .map(PathBuf::from)
+}
+
 /// The folders searched, in order: `$CS184_SCENES` when it is set and names
 /// a folder, then [`FALLBACK`] when it exists.
 pub fn roots() -> Vec<PathBuf> {
-    let from_env = std::env::var_os(ENV_VAR)
-        .filter(|v| !v.is_empty())
-        .map(PathBuf::from);
-    from_env
+    env_root()
         .into_iter()
         .chain([PathBuf::from(FALLBACK)])
         .filter(|dir| dir.is_dir())
