@@ -338,7 +338,7 @@ fn info_names_the_glint_samples() {
     let scene = dir.path().join(name);
     // The test scene with its red material (the ball's) a mirror.
     let mirror = common::corrupt(
-        "<technique sid=\"common\"><lambert>\n      <diffuse><color>0.7 0.1 0.1 1</color></diffuse></lambert></technique></profile_COMMON>",
+        "<technique sid=\"common\"><phong>\n      <diffuse><color>0.7 0.1 0.1 1</color></diffuse></phong></technique></profile_COMMON>",
         "</profile_COMMON><extra><technique profile=\"CGL\"><mirror><reflectance>1 1 1</reflectance></mirror></technique></extra>",
     );
     std::fs::write(&scene, mirror).unwrap();

@@ -284,7 +284,8 @@ impl MeshBuilder {
     /// Cell `(i, j)` gives `(v[i,j], v[i+1,j], v[i,j+1])` unless `j` is
     /// the first row and `(v[i+1,j], v[i+1,j+1], v[i,j+1])` unless it is
     /// the last, so no triangle degenerates at the poles:
-    /// `2 phi_steps (theta_steps - 1)` triangles.
+    /// `2 phi_steps (theta_steps - 1)` triangles. The poles are one vertex
+    /// each and the seam is shared (`theta_steps` at least 2).
     fn sphere_grid(
         &mut self,
         material: MaterialId,
@@ -292,15 +293,25 @@ impl MeshBuilder {
         theta_steps: u32,
         point: impl Fn(f32, f32) -> Vec3,
     ) {
+        // One vertex a pole, rings between, the seam at p = 2 pi the same
+        // vertices as p = 0: a closed mesh, without the boundary on which
+        // the course's normals go wrong (super::course_normals).
         let base = self.mesh.positions.len() as u32;
-        let index = |i: u32, j: u32| base + i * (theta_steps + 1) + j;
-        for i in 0..=phi_steps {
-            let p = 2.0 * PI * i as f32 / phi_steps as f32;
-            for j in 0..=theta_steps {
-                let t = PI * j as f32 / theta_steps as f32;
+        let bottom = base + 1 + phi_steps * (theta_steps - 1);
+        let index = |i: u32, j: u32| match j {
+            0 => base,
+            j if j == theta_steps => bottom,
+            j => base + 1 + (j - 1) * phi_steps + i % phi_steps,
+        };
+        self.mesh.positions.push(point(0.0, 0.0));
+        for j in 1..theta_steps {
+            let t = PI * j as f32 / theta_steps as f32;
+            for i in 0..phi_steps {
+                let p = 2.0 * PI * i as f32 / phi_steps as f32;
                 self.mesh.positions.push(point(t, p));
             }
         }
+        self.mesh.positions.push(point(PI, 0.0));
         for i in 0..phi_steps {
             for j in 0..theta_steps {
                 if j != 0 {

@@ -54,7 +54,7 @@ pub fn write_dae(mesh: &TriangleMesh, view: &ExportView, out: &mut impl Write) -
     )?;
     writeln!(
         out,
-        r#"<library_effects><effect id="fx"><profile_COMMON><technique sid="common"><lambert><diffuse><color>{a} {a} {a} 1</color></diffuse></lambert></technique></profile_COMMON></effect></library_effects>"#
+        r#"<library_effects><effect id="fx"><profile_COMMON><technique sid="common"><phong><diffuse><color>{a} {a} {a} 1</color></diffuse></phong></technique></profile_COMMON></effect></library_effects>"#
     )?;
     writeln!(
         out,

@@ -17,7 +17,13 @@
 //!   so `T` translates by `G dir_to_camera + (0, 0, 1)`;
 //! - point light and sphere: a translation to the position or centre.
 //!
-//! Materials are CGL techniques (diffuse as `<lambert>`). The mesh is
+//! Each connected part of the mesh is wound so that the normals the
+//! course rebuilds agree with the scene's: the course reverses them on an
+//! open part's boundary ([`super::course_normals`]), so a wall or a pane
+//! is written the other way round.
+//!
+//! Materials are CGL techniques (diffuse as `<phong>`, the only shader
+//! whose colour the course reads). The mesh is
 //! written as one `<geometry>` and one node per material, each with the
 //! vertices its triangles use and one `<polylist>` (with `<vcount>`): the
 //! course's loaders read only a geometry's first `<polylist>` (the 2023
@@ -34,6 +40,10 @@ use std::io::{self, Write};
 
 use glam::Vec3;
 
+use std::collections::HashMap;
+
+use super::course_normals::course_vertex_normals;
+use super::normals::area_weighted_vertex_normals;
 use super::{Light, Material, Scene};
 
 /// The course's `G`, from world space to the file's Z-up space (and back).
@@ -64,7 +74,7 @@ fn effect(material: &Material) -> Result<String, String> {
         |body: String| format!(r#"<extra><technique profile="CGL">{body}</technique></extra>"#);
     Ok(match *material {
         Material::Diffuse { albedo } => format!(
-            r#"<profile_COMMON><technique sid="common"><lambert><diffuse><color>{} 1</color></diffuse></lambert></technique></profile_COMMON>"#,
+            r#"<profile_COMMON><technique sid="common"><phong><diffuse><color>{} 1</color></diffuse></phong></technique></profile_COMMON>"#,
             triple(albedo)
         ),
         Material::Emission { radiance } => cgl(format!(
@@ -247,6 +257,11 @@ fn used_materials(scene: &Scene) -> Vec<u32> {
 /// file space, and one `<polylist>` of them.
 fn write_mesh(scene: &Scene, materials: &[u32], doc: &mut String) {
     let mesh = &scene.mesh;
+    let intended = if mesh.normals.len() == mesh.positions.len() {
+        mesh.normals.clone()
+    } else {
+        area_weighted_vertex_normals(&mesh.positions, &mesh.triangles)
+    };
     for &m in materials {
         let triangles: Vec<[u32; 3]> = mesh
             .triangles
@@ -255,6 +270,7 @@ fn write_mesh(scene: &Scene, materials: &[u32], doc: &mut String) {
             .filter(|(_, &tm)| tm == m)
             .map(|(t, _)| *t)
             .collect();
+        let triangles = wound_for_the_course(&mesh.positions, &intended, &triangles);
         // The vertices these triangles use, numbered anew in order of use.
         let mut local = std::collections::HashMap::new();
         let mut used = Vec::new();
@@ -289,6 +305,61 @@ fn write_mesh(scene: &Scene, materials: &[u32], doc: &mut String) {
         }
         doc.push_str("</p></polylist></mesh></geometry>");
     }
+}
+
+/// `triangles` with each connected part wound so that the normals the
+/// course rebuilds ([`course_vertex_normals`]) agree with `intended` at
+/// the most vertices: an open part (a wall, a pane) the other way round,
+/// since the course reverses the normals on a boundary, a closed one as
+/// it is.
+fn wound_for_the_course(
+    positions: &[Vec3],
+    intended: &[Vec3],
+    triangles: &[[u32; 3]],
+) -> Vec<[u32; 3]> {
+    let flipped: Vec<[u32; 3]> = triangles.iter().map(|&[a, b, c]| [a, c, b]).collect();
+    let (as_is, reversed) = (
+        course_vertex_normals(positions, triangles),
+        course_vertex_normals(positions, &flipped),
+    );
+    // Connected parts: union-find over the vertices.
+    let mut parent: HashMap<u32, u32> = HashMap::new();
+    fn root(parent: &mut HashMap<u32, u32>, v: u32) -> u32 {
+        let p = *parent.entry(v).or_insert(v);
+        if p == v {
+            return v;
+        }
+        let r = root(parent, p);
+        parent.insert(v, r);
+        r
+    }
+    for &[a, b, c] in triangles {
+        for (u, w) in [(a, b), (b, c)] {
+            let (ru, rw) = (root(&mut parent, u), root(&mut parent, w));
+            parent.insert(ru, rw);
+        }
+    }
+    // Per part, the vertices where reversing agrees better, less those
+    // where keeping does.
+    let mut vote: HashMap<u32, i64> = HashMap::new();
+    let vertices: Vec<u32> = parent.keys().copied().collect();
+    for v in vertices {
+        let n = intended[v as usize];
+        let score = |normals: &[Vec3]| (normals[v as usize].dot(n) > 0.0) as i64;
+        let part = root(&mut parent, v);
+        *vote.entry(part).or_default() += score(&reversed) - score(&as_is);
+    }
+    triangles
+        .iter()
+        .zip(&flipped)
+        .map(|(&t, &f)| {
+            if vote[&root(&mut parent, t[0])] > 0 {
+                f
+            } else {
+                t
+            }
+        })
+        .collect()
 }
 
 #[cfg(test)]

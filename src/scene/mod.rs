@@ -9,6 +9,7 @@
 pub mod builtin;
 pub mod collada;
 pub mod course_files;
+pub mod course_normals;
 pub mod error;
 pub mod export;
 pub mod export_scene;

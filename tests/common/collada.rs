@@ -23,8 +23,8 @@ pub const MINIMAL: &str = r##"<?xml version="1.0" encoding="utf-8"?>
     <light id="lamp"><technique_common><point><color>2 2 2</color></point></technique_common></light>
   </library_lights>
   <library_effects>
-    <effect id="red-fx"><profile_COMMON><technique sid="common"><lambert>
-      <diffuse><color>0.7 0.1 0.1 1</color></diffuse></lambert></technique></profile_COMMON></effect>
+    <effect id="red-fx"><profile_COMMON><technique sid="common"><phong>
+      <diffuse><color>0.7 0.1 0.1 1</color></diffuse></phong></technique></profile_COMMON></effect>
     <effect id="glow-fx"><extra><technique profile="CGL">
       <emission><radiance>3 3 3</radiance></emission></technique></extra></effect>
   </library_effects>

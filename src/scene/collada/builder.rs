@@ -19,7 +19,7 @@ use std::collections::HashMap;
 use glam::Vec3;
 use roxmltree::Node;
 
-use super::super::normals::area_weighted_vertex_normals;
+use super::super::course_normals::course_vertex_normals;
 use super::super::{Material, MaterialId, Scene, SceneError, Sphere};
 use super::material::material;
 use super::mesh::LocalMesh;
@@ -120,10 +120,13 @@ impl SceneBuilder {
         Ok(())
     }
 
-    /// The finished scene, with the course's rebuilt vertex normals.
+    /// The finished scene, with the vertex normals the course rebuilds
+    /// ([`course_vertex_normals`]: reversed on an open patch's boundary).
+    /// The course builds them per geometry; a placed geometry's vertices
+    /// are its own, so the whole mesh at once gives the same.
     pub fn finish(mut self) -> Scene {
         let mesh = &mut self.scene.mesh;
-        mesh.normals = area_weighted_vertex_normals(&mesh.positions, &mesh.triangles);
+        mesh.normals = course_vertex_normals(&mesh.positions, &mesh.triangles);
         self.scene
     }
 }

@@ -18,9 +18,10 @@
 //! fields are warnings and values out of range errors (`super::fields`);
 //! a technique that was meant as CGL but is not spelled `profile="CGL"`
 //! exactly is ignored with a warning, as the course's reader ignores it. Otherwise the material
-//! is diffuse with the `<diffuse><color>` of the effect's
-//! phong/lambert/blinn shader (albedo 0.5, the course's default, when there
-//! is none or it is a texture). An unknown CGL BSDF is an error.
+//! is diffuse with the `<diffuse><color>` of the effect's `<phong>`
+//! shader (albedo 0.5, the course's default, when there is none or it is a
+//! texture); the course reads no other shader, so a `<lambert>` or
+//! `<blinn>` colour is ignored with a warning. An unknown CGL BSDF is an error.
 
 use roxmltree::Node;
 
@@ -119,10 +120,17 @@ fn diffuse_color(doc: &Doc, effect: Node) -> Result<Option<Rgb>, SceneError> {
     let Some(technique) = descend(effect, &["profile_COMMON", "technique"]) else {
         return Ok(None);
     };
-    let shader = ["phong", "lambert", "blinn"]
-        .iter()
-        .find_map(|name| child(technique, name));
-    let Some(diffuse) = shader.and_then(|s| child(s, "diffuse")) else {
+    // The course reads `phong/diffuse/color` alone: another shader's
+    // colour is lost in a course binary, so it is here too, said.
+    for other in ["lambert", "blinn"] {
+        if let Some(shader) = child(technique, other) {
+            doc.warn(
+                shader,
+                format!("the course reads only <phong>'s colour: this <{other}> is diffuse 0.5, as in a course binary"),
+            );
+        }
+    }
+    let Some(diffuse) = child(technique, "phong").and_then(|s| child(s, "diffuse")) else {
         return Ok(None);
     };
     let fields = Fields::new(doc, diffuse, &["color", "texture"]);
@@ -165,6 +173,12 @@ mod tests {
             }
         );
         assert_eq!(parse("").unwrap(), Material::DEFAULT);
+        // The course reads no <lambert> colour (a course binary renders it
+        // grey), nor does this loader.
+        let lambert = parse(
+            "<profile_COMMON><technique><lambert><diffuse><color>0.6 0.2 0.2 1</color></diffuse></lambert></technique></profile_COMMON>",
+        );
+        assert_eq!(lambert.unwrap(), Material::DEFAULT);
     }
 
     #[test]
