@@ -117,7 +117,7 @@ fn cells_with_gain(
 /// Power: a renderer 10 % too bright or too dark everywhere fails every
 /// check of 3-1 at the battery's rate but the noisy `-H` one, which a
 /// renderer 30 % off fails. Measured (`measure_the_power_of_each_check`,
-/// 5 seeds a factor; docs/15-check.md): every other check fails 0.93 and
+/// 5 seeds a factor; docs/maintainers/checker.md): every other check fails 0.93 and
 /// 1.07 at 5 of 5 seeds, `-H` fails 0.8 and 1.15 at 5 of 5.
 #[test]
 fn a_tenth_too_bright_or_too_dark_fails_every_check() {
@@ -135,7 +135,7 @@ fn a_tenth_too_bright_or_too_dark_fails_every_check() {
 /// The smallest constant factor each check of 3-1 detects, over 5 seeds
 /// a factor (by hand: `cargo test --profile quick --test check --
 /// --ignored measure_the_power --nocapture`; the table is in
-/// docs/15-check.md).
+/// docs/maintainers/checker.md).
 #[test]
 #[ignore = "a measurement, by hand"]
 fn measure_the_power_of_each_check() {
@@ -161,7 +161,7 @@ fn measure_the_power_of_each_check() {
 /// renders at new seeds against the check's null model, at `alpha` =
 /// 0.05 and at the battery's rate, with the largest severity (by hand:
 /// `cargo test --profile quick --test check -- --ignored
-/// measure_false_alarms --nocapture`; docs/15-check.md).
+/// measure_false_alarms --nocapture`; docs/maintainers/checker.md).
 #[test]
 #[ignore = "a measurement, by hand"]
 fn measure_false_alarms_of_each_check() {
@@ -189,7 +189,7 @@ fn measure_false_alarms_of_each_check() {
 /// sixty-fourth (60 x 45), over 5 seeds a factor: the power for an error
 /// in one region, a wall or a ball (by hand: `cargo test --profile quick
 /// --test check -- --ignored measure_the_regional --nocapture`; the table
-/// is in docs/15-check.md).
+/// is in docs/maintainers/checker.md).
 #[test]
 #[ignore = "a measurement, by hand"]
 fn measure_the_regional_power_of_each_check() {
@@ -271,7 +271,7 @@ fn a_mistake_fails_its_part_and_is_named() {
 /// 1's through those of parts 2 and 3), and what the checker would say
 /// were it held out of the catalogue: the others that fit its image (by
 /// hand: `cargo test --profile quick --test check -- --ignored
-/// measure_each_mistake --nocapture`; docs/15-check.md lists the
+/// measure_each_mistake --nocapture`; docs/maintainers/checker.md lists the
 /// results).
 #[test]
 #[ignore = "a measurement, by hand"]

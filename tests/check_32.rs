@@ -158,7 +158,7 @@ fn a_binary_without_a_lens_or_a_map_skips_parts_7_and_8() {
     }
 }
 
-/// The measurements of docs/15-check.md, by hand (`cargo test --profile
+/// The measurements of docs/maintainers/checker.md, by hand (`cargo test --profile
 /// quick --test check_32 -- --ignored --nocapture`, 2 to 4 minutes on 2
 /// cores): per 3-2 check, one null model of 8 renders (as the checker's),
 /// then 30 correct renders at new seeds, counting those over the

@@ -58,6 +58,9 @@ pub struct CheckResult {
     pub outcome: Outcome,
     /// What the report shows, when the binary gave an image.
     pub images: Option<CheckImages>,
+    /// The command run on the student's binary (in its working folder),
+    /// to reproduce the check by hand; empty when it was not run.
+    pub command: Vec<String>,
 }
 
 impl Outcome {

@@ -89,14 +89,29 @@ fn figure(caption: &str, width: u32, height: u32, rgb: &[u8]) -> String {
     )
 }
 
+/// The catalogue's pages of symptoms in this project's docs, where the
+/// report links each named mistake (its section's anchor is its name).
+const SYMPTOMS: &str = concat!(
+    "file://",
+    env!("CARGO_MANIFEST_DIR"),
+    "/docs/13-symptoms.md"
+);
+
 fn section(i: usize, r: &CheckResult) -> String {
     let c = &r.check;
+    let run = if r.command.is_empty() {
+        format!("Flags: <code>{}</code>.", escape(&c.flags(2).join(" ")))
+    } else {
+        format!(
+            "Run (in <code>runs/</code>, to reproduce it): <code>{}</code>.",
+            escape(&r.command.join(" "))
+        )
+    };
     let mut html = format!(
-        r#"<section id="check-{i}"><h2>Part {}: {} <span class="{v}">{v}</span></h2><p>Starter function: <code>{}</code>. Flags: <code>{}</code>.</p>"#,
+        r#"<section id="check-{i}"><h2>Part {}: {} <span class="{v}">{v}</span></h2><p>Starter function: <code>{}</code>. {run}</p>"#,
         c.part,
         escape(c.name),
         c.function,
-        escape(&c.flags(2).join(" ")),
         v = r.outcome.word()
     );
     match &r.outcome {
@@ -151,7 +166,8 @@ fn section(i: usize, r: &CheckResult) -> String {
             let fit = if s.fits { "fits" } else { "does not fit" };
             let _ = write!(
                 html,
-                "<li><b>{}</b> ({fit}; misfit {:.2} per cell). Look at <code>{}</code>: {}. Shows: {}.",
+                r#"<li><b><a href="{SYMPTOMS}#{}">{}</a></b> ({fit}; misfit {:.2} per cell). Look at <code>{}</code>: {}. Shows: {}."#,
+                info.name,
                 info.name,
                 s.misfit,
                 escape(info.function),

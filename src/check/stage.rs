@@ -126,7 +126,7 @@ impl Stage {
     /// radiance at pixel `(x, y)` `gain(x, y)` times the right one (before
     /// the tone map): a renderer off by a factor everywhere or in a
     /// region, to measure the smallest error a check detects (its power,
-    /// docs/15-check.md). Never kept.
+    /// docs/maintainers/checker.md). Never kept.
     pub fn render_with_gain(
         &self,
         check: &Check,

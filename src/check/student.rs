@@ -248,6 +248,18 @@ impl Student {
 
     /// Renders with `args` (the course's flags, the scene last) into
     /// `image` (a name inside the working folder) of size `size`.
+    /// The command [`Student::render`] runs, the binary first: to
+    /// reproduce it by hand in [`Student::work`].
+    pub fn command_line(&self, args: &[String], image: &str) -> Vec<String> {
+        let mut all = vec![
+            self.binary.to_string_lossy().into_owned(),
+            "-f".to_string(),
+            image.to_string(),
+        ];
+        all.extend_from_slice(args);
+        all
+    }
+
     pub fn render(
         &self,
         args: &[String],
@@ -257,9 +269,7 @@ impl Student {
         let path = self.work.join(image);
         let _ = std::fs::remove_file(&path);
         let _ = std::fs::remove_file(rate_image_path(&path));
-        let mut all = vec!["-f".to_string(), image.to_string()];
-        all.extend_from_slice(args);
-        let output = self.run(&all)?;
+        let output = self.run(&self.command_line(args, image)[1..])?;
         if !output.status.success() {
             let last = String::from_utf8_lossy(&output.stderr);
             let line = last

@@ -134,6 +134,7 @@ pub fn judge(
         check: *check,
         outcome,
         images: None,
+        command: Vec::new(),
     };
     if !check.accumulate && !capabilities.accumulate_flag {
         return result(Outcome::Skipped("the binary has no -o".into()));
@@ -164,6 +165,13 @@ pub fn judge(
         }
     }
     args.push(scene_file.to_string());
+    let command = student.command_line(&args, "check.png");
+    let result = |outcome| CheckResult {
+        check: *check,
+        outcome,
+        images: None,
+        command: command.clone(),
+    };
     let image = match student.render(&args, "check.png", SIZE) {
         Ok(image) => image,
         Err(e) => return result(Outcome::Error(e.to_string())),

@@ -134,6 +134,7 @@ pub fn check(args: &CheckArgs) -> Result<ExitCode, Box<dyn Error>> {
                 check: *check,
                 outcome: Outcome::Error(e.to_string()),
                 images: None,
+                command: Vec::new(),
             },
         });
         bar.inc(1);
@@ -154,8 +155,18 @@ pub fn check(args: &CheckArgs) -> Result<ExitCode, Box<dyn Error>> {
                 crate::say!("\npart {}, {}: {what}", r.check.part, r.check.name)?;
                 for s in suspects.iter().take(3) {
                     let fit = if s.fits { "fits" } else { "does not fit" };
-                    crate::say!("  {} ({fit}; misfit {:.2} per cell)", s.mistake, s.misfit)?;
+                    crate::say!(
+                        "  {} ({fit}; misfit {:.2} per cell): docs/13-symptoms.md#{}",
+                        s.mistake,
+                        s.misfit,
+                        s.mistake
+                    )?;
                 }
+                crate::say!(
+                    "  to run it again, in {}: {}",
+                    student.work.display(),
+                    r.command.join(" ")
+                )?;
             }
             Outcome::NotWritten(u) => crate::say!(
                 "\npart {}, {}: not written yet: {} in {} (part {}): {}",
@@ -270,6 +281,7 @@ mod tests {
             check,
             outcome,
             images: None,
+            command: Vec::new(),
         };
         let pass = result(Outcome::Pass {
             statistic: 1.0,
