@@ -26,7 +26,7 @@ fn a_correct_renderer_passes_every_check() {
     let bench = Bench::new();
     let binary = stand_in(bench.dir.path(), None, 1);
     let results = bench.run(binary, &battery(&[]));
-    assert_eq!(results.len(), 6);
+    assert_eq!(results.len(), 7);
     report_is_whole(&results, bench.dir.path());
     all_pass(results);
 }
@@ -229,10 +229,13 @@ fn measure_the_regional_power_of_each_check() {
 #[test]
 fn a_mistake_fails_its_part_and_is_named() {
     let bench = Bench::new();
-    // Each with a telling check of its part: the mesh for part 2; light
+    // Each with a telling check of its part: the glowing box's first
+    // hits for part 1; the mesh for part 2; light
     // sampling for part 3; all bounces (roulette) or the second alone
     // (-o 0) for part 4.
     let cases = [
+        (Mistake::FovFullAngle, 1, 0, None),
+        (Mistake::RayInCameraSpace, 1, 0, None),
         (Mistake::TraversalReturnsFirstHit, 2, 0, None),
         (Mistake::BoxMissesRaysFromInside, 2, 0, None),
         (Mistake::BarycentricsPermuted, 2, 0, None),
@@ -265,6 +268,25 @@ fn a_mistake_fails_its_part_and_is_named() {
         });
         assert!(named, "{mistake} was not named: {:?}", results[0].outcome);
     }
+    // C++'s chained comparison in the triangle test and a max_t not
+    // shrunk show the same first hits at -m 0 (a later triangle on the
+    // ray wins either way): both fit part 1's check, and are named first.
+    let check = battery(&[1])[0];
+    let binary = stand_in(
+        bench.dir.path(),
+        Some(Mistake::TriangleChainedComparison),
+        3,
+    );
+    let Outcome::Fail { suspects, .. } = &bench.run(binary, &[check])[0].outcome else {
+        panic!("triangle-chained-comparison passed part 1");
+    };
+    let mut first_two = [suspects[0].mistake, suspects[1].mistake];
+    first_two.sort_by_key(|m| m.to_string());
+    assert_eq!(
+        first_two,
+        [Mistake::MaxTNotShrunk, Mistake::TriangleChainedComparison]
+    );
+    assert!(suspects[0].fits && suspects[1].fits, "{suspects:?}");
 }
 
 /// Every mistake of parts 1 to 4 through every check of its part (part

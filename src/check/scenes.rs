@@ -57,6 +57,10 @@ pub enum CheckScene {
     /// Diffuse balls on a floor lit by an environment map alone
     /// ([`sky_balls`], [`super::sky`]).
     Sky,
+    /// The Cornell box whose every wall and ball glows a colour of its own,
+    /// without light ([`glowing_box`]): at `-m 0` an image of which
+    /// surface each camera ray hits first.
+    Glowing,
 }
 
 /// The course scene [`CheckScene::Lambertian`] prefers.
@@ -70,7 +74,8 @@ pub const COURSE_MICROFACET_SCENE: &str = "CBspheres_microfacet_al_ag.dae";
 
 impl CheckScene {
     /// Every one, in the battery's order.
-    pub const ALL: [CheckScene; 5] = [
+    pub const ALL: [CheckScene; 6] = [
+        CheckScene::Glowing,
         CheckScene::Lambertian,
         CheckScene::Mesh,
         CheckScene::Specular,
@@ -86,6 +91,7 @@ impl CheckScene {
             CheckScene::Specular => "specular-box.dae",
             CheckScene::Microfacet => "microfacet-box.dae",
             CheckScene::Sky => "sky-balls.dae",
+            CheckScene::Glowing => "glowing-box.dae",
         }
     }
 
@@ -97,6 +103,7 @@ impl CheckScene {
             CheckScene::Specular => specular_box(),
             CheckScene::Microfacet => microfacet_box(),
             CheckScene::Sky => sky_balls(),
+            CheckScene::Glowing => glowing_box(),
         }
     }
 
@@ -106,7 +113,7 @@ impl CheckScene {
             CheckScene::Lambertian => Some(COURSE_SCENE),
             CheckScene::Mesh => Some(COURSE_MESH_SCENE),
             CheckScene::Microfacet => Some(COURSE_MICROFACET_SCENE),
-            CheckScene::Specular | CheckScene::Sky => None,
+            CheckScene::Specular | CheckScene::Sky | CheckScene::Glowing => None,
         }
     }
 
@@ -191,28 +198,53 @@ impl CheckScene {
     }
 }
 
-/// The scene that tells a 3-2 binary from a 3-1 one
-/// ([`super::Student::renders_lamps_as_quads`]): the Cornell box with
-/// every surface emitting radiance 1 and no light. The 3-2 starter's
-/// loader makes every emissive mesh emit nothing (its `EmissionBSDF` is
-/// given the direction 0 and emits `radiance * max(0, dir . wo)`), so at
-/// `-m 0` a 3-2 binary renders it black; a 3-1 binary renders the walls'
-/// glow (or, not written yet, a placeholder, never black).
+/// Part 1's scene ([`CheckScene::Glowing`]), and with the box's own
+/// camera the one that tells a 3-2 binary from a 3-1 one
+/// ([`write_lamp_probe`]): the Cornell box with each wall, the lamp and each ball emitting a
+/// colour of its own (at most 0.6, below the tone map's white), and no
+/// light, seen from the front right. At `-m 0` a 3-1 binary renders which
+/// surface each camera ray meets first: the field of view, the camera's frame, triangles and
+/// spheres, the nearest hit. The 3-2 starter's loader makes every
+/// emissive surface emit nothing (its `EmissionBSDF` is given the
+/// direction 0 and emits `radiance * max(0, dir . wo)`), so a 3-2 binary
+/// renders it black.
 pub fn glowing_box() -> Scene {
     let mut scene = builtin::cornell_box();
     scene.lights.clear();
-    scene.spheres.clear();
-    for m in &mut scene.materials {
-        *m = Material::Emission {
-            radiance: crate::math::Rgb::ONE,
-        };
+    // Seen from the front right, not along -z: a camera frame left out
+    // (rays in camera space) shows.
+    scene.camera.dir_to_camera = glam::Vec3::new(0.4, 0.2, 1.0).normalize();
+    // Each quad of the box (two triangles) and each ball its own colour.
+    let quads = scene.mesh.triangles.len().div_ceil(2);
+    let colour = |k: usize| {
+        let hue = k as f32 * 0.618_034;
+        let channel =
+            |shift: f32| 0.05 + 0.55 * (0.5 + 0.5 * (std::f32::consts::TAU * (hue + shift)).cos());
+        crate::math::Rgb::new(channel(0.0), channel(1.0 / 3.0), channel(2.0 / 3.0))
+    };
+    scene.materials = (0..quads + scene.spheres.len())
+        .map(|k| Material::Emission {
+            radiance: colour(k),
+        })
+        .collect();
+    for (t, m) in scene.mesh.materials.iter_mut().enumerate() {
+        *m = (t / 2) as MaterialId;
+    }
+    for (k, sphere) in scene.spheres.iter_mut().enumerate() {
+        sphere.material = (quads + k) as MaterialId;
     }
     scene
 }
 
-/// Writes [`glowing_box`] into `out/scenes/glowing-box.dae`.
-pub fn write_glowing_box(out: &Path) -> Result<PathBuf, String> {
-    write_own(&glowing_box(), out, "glowing-box.dae")
+/// The scene that tells a 3-2 binary from a 3-1 one
+/// ([`super::Student::renders_lamps_as_quads`]): [`glowing_box`] seen as
+/// the Cornell box is, so that a camera a 3-1 binary gets wrong misses
+/// the same in it as in the lit box; written into
+/// `out/scenes/lamp-probe.dae`.
+pub fn write_lamp_probe(out: &Path) -> Result<PathBuf, String> {
+    let mut scene = glowing_box();
+    scene.camera = builtin::cornell_box().camera;
+    write_own(&scene, out, "lamp-probe.dae")
 }
 
 /// Writes `scene` in the course's dialect as `out/scenes/name`.

@@ -177,17 +177,24 @@ impl Student {
     /// render of `glowing_box` ([`super::scenes::glowing_box`], every
     /// surface emitting, no light) is black, as only a 3-2 starter's
     /// loader makes it (but for the staff library's stamp in the bottom
-    /// left corner: nine in ten pixels black is enough); `None` when the
+    /// left corner: nine in ten pixels black is enough), while its render
+    /// of the lit box `lit_box` at `-m 1` is not (a 3-1 binary whose
+    /// camera rays miss everything renders both black). `None` when the
     /// binary gave no image.
-    pub fn renders_lamps_as_quads(&self, glowing_box: &Path) -> Option<bool> {
-        let args: Vec<String> = ["-t", "1", "-s", "1", "-l", "1", "-m", "0", "-r", "48", "36"]
+    pub fn renders_lamps_as_quads(&self, glowing_box: &Path, lit_box: &Path) -> Option<bool> {
+        let black_at = |depth: &str, scene: &Path| -> Option<bool> {
+            let args: Vec<String> = [
+                "-t", "1", "-s", "1", "-l", "1", "-m", depth, "-r", "48", "36",
+            ]
             .iter()
             .map(|w| w.to_string())
-            .chain([glowing_box.to_string_lossy().into_owned()])
+            .chain([scene.to_string_lossy().into_owned()])
             .collect();
-        let image = self.render(&args, "lamps.png", (48, 36)).ok()?;
-        let black = image.rgb.chunks(3).filter(|p| *p == [0, 0, 0]).count();
-        Some(black * 10 >= 9 * image.rgb.len() / 3)
+            let image = self.render(&args, "lamps.png", (48, 36)).ok()?;
+            let black = image.rgb.chunks(3).filter(|p| *p == [0, 0, 0]).count();
+            Some(black * 10 >= 9 * image.rgb.len() / 3)
+        };
+        Some(black_at("0", glowing_box)? && !black_at("1", lit_box)?)
     }
 
     /// What the binary supports: a tiny render of `scene_file` (8 x 6

@@ -186,8 +186,8 @@ pub fn check(args: &CheckArgs) -> Result<ExitCode, Box<dyn Error>> {
 
 /// The assignment whose battery runs, and why: `--assignment`, else 3-2
 /// when a `--part` is 6 or more, else as the binary shows (a 3-2 binary
-/// renders an emissive mesh without light black at `-m 0`,
-/// [`Student::renders_lamps_as_quads`]); an error when `--assignment 3-1`
+/// renders emissive surfaces without light black at `-m 0`, and a lit
+/// box not, [`Student::renders_lamps_as_quads`]); an error when `--assignment 3-1`
 /// names parts of 3-2.
 fn assignment_for(
     args: &CheckArgs,
@@ -195,8 +195,10 @@ fn assignment_for(
 ) -> Result<(Assignment, &'static str), Box<dyn Error>> {
     let implied = assignment_of(&args.parts);
     let three_two = || -> Result<bool, Box<dyn Error>> {
-        let probe = crate::check::scenes::write_glowing_box(&args.out)?;
-        Ok(student.renders_lamps_as_quads(&probe) == Some(true))
+        let scenes = args.scenes.as_deref();
+        let glowing = crate::check::scenes::write_lamp_probe(&args.out)?;
+        let lit = CheckScene::Lambertian.file(scenes, &args.out)?.path;
+        Ok(student.renders_lamps_as_quads(&glowing, &lit) == Some(true))
     };
     match (args.assignment.map(Assignment::from), implied) {
         (Some(Assignment::PathTracer1), Some(_)) => {
@@ -252,7 +254,7 @@ mod tests {
                 .map_err(|e| e.to_string())
         };
         use Assignment::{PathTracer1 as A1, PathTracer2 as A2};
-        assert_eq!(parts("--student s"), Ok((A1, vec![2, 3, 3, 4, 4, 5])));
+        assert_eq!(parts("--student s"), Ok((A1, vec![1, 2, 3, 3, 4, 4, 5])));
         assert_eq!(
             parts("--student s --assignment 3-2"),
             Ok((A2, vec![2, 3, 3, 4, 4, 5, 6, 6, 7, 8]))
