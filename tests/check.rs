@@ -242,7 +242,9 @@ fn a_mistake_fails_its_part_and_is_named() {
         (Mistake::NoCosine, 3, 1, None),
         (Mistake::LightSamplesNotAveraged, 3, 1, None),
         (Mistake::ShadowRayReachesLight, 3, 1, None),
-        (Mistake::ShadowAcne, 3, 1, Some("acne:")),
+        // Speckles of shadow: darker pixels (acne) or black ones (holes),
+        // as the shadow ray meets its own surface nearer or farther off.
+        (Mistake::ShadowAcne, 3, 1, Some(&["acne:", "holes:"][..])),
         (Mistake::RouletteNotDivided, 4, 0, None),
         (Mistake::NoAccumulationSumsAll, 4, 1, None),
     ];
@@ -259,7 +261,7 @@ fn a_mistake_fails_its_part_and_is_named() {
                 let others = others_that_fit(suspects, mistake);
                 assert!(others.is_empty(), "{mistake}: {others:?} fit too");
                 assert!(
-                    pattern.is_none_or(|p| what.contains(p)),
+                    pattern.is_none_or(|p: &[&str]| p.iter().any(|p| what.contains(p))),
                     "{mistake}: {what}"
                 );
                 suspects[0].mistake == mistake && suspects[0].fits

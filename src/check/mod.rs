@@ -63,8 +63,9 @@ pub const ALPHA: f64 = 0.01;
 /// The scene file of [`CheckScene::Lambertian`] and the scene as this
 /// project loads it ([`CheckScene::file`]).
 pub fn scene_for_checks(scenes: Option<&Path>, out: &Path) -> Result<(PathBuf, Scene), String> {
+    let from_env = crate::scene::course_files::env_root();
     CheckScene::Lambertian
-        .file(scenes, out)
+        .file(scenes.or(from_env.as_deref()), out)
         .map(|f| (f.path, f.scene))
 }
 

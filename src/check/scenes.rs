@@ -152,13 +152,11 @@ impl CheckScene {
     /// loads it, and a warning when a stand-in is used for a course scene
     /// that was not found: for [`CheckScene::Lambertian`],
     /// [`CheckScene::Mesh`] and [`CheckScene::Microfacet`] the course's
-    /// file found anywhere under `scenes` (or `CS184_SCENES`; the course's
-    /// `dae/` keeps its scenes in subfolders) when there, else the
-    /// project's own written to `out/scenes/`.
+    /// file found anywhere under `scenes` (the course's `dae/` keeps its
+    /// scenes in subfolders) when there, else the project's own written
+    /// to `out/scenes/`.
     pub fn file(self, scenes: Option<&Path>, out: &Path) -> Result<SceneFile, String> {
-        let root = scenes
-            .map(Path::to_path_buf)
-            .or_else(course_files::env_root);
+        let root = scenes.map(Path::to_path_buf);
         let mut warning = None;
         if let Some(name) = self.course_file() {
             if let Some(path) = root
@@ -179,8 +177,7 @@ impl CheckScene {
                     self.file_name()
                 ),
                 None => format!(
-                    "no --scenes (nor {}) to find the course's {name} in: the checks use the project's stand-in, {}",
-                    course_files::ENV_VAR,
+                    "no folder of course scenes to find {name} in: the checks use the project's stand-in, {}",
                     self.file_name()
                 ),
             });

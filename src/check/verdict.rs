@@ -212,6 +212,16 @@ pub fn judge(
     let reference = mean_image(&images_of);
     if stamped {
         written.image = unwritten::stamp_from(&written.image, &reference);
+        // The stamp's pixels record no sample in the rate image either.
+        if let Some(rates) = &mut written.rates {
+            let mean = mean_fractions(&renders);
+            let width = SIZE.0 as usize;
+            for (k, r) in rates.iter_mut().enumerate() {
+                if k % width < unwritten::STAMP.0 && k / width >= unwritten::STAMP.1 {
+                    *r = mean[k];
+                }
+            }
+        }
     }
     let planes = Plane::of(check);
     let alpha = alpha / planes.len() as f64;

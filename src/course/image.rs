@@ -83,7 +83,7 @@ impl CourseExact {
         pixel::render(
             camera,
             &settings,
-            sampling.adaptive,
+            sampling.adaptive.map(|a| (a, self.stop_rule())),
             tracer.mistakes,
             |ray, s| tracer.radiance(world, ray, s),
         )

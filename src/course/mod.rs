@@ -21,7 +21,7 @@
 //! | microfacet sampling | visible normals where it pays | the half vector | handout |
 //! | environment map's sampling weights | the bilinear lookup's average over a cell | the cell's texel | `EnvironmentLight::init` |
 //! | adaptive sampling | only with `-a` | on by default (32, 0.05) once part 5 is written | `main.cpp` |
-//! | pixels that stop early | their mean | 3-2: the staff library's mean, `n / (n - 1)` of it | `libpt31.so` |
+//! | pixels that stop early | their mean | 3-2: tested one sample late, written as the sum over one sample fewer | `libpt31.so` |
 //! | PNG | rounded | truncated, `floor(255 v)` | `HDRImageBuffer::toColor` |
 //!
 //! The settings live in [`CourseExact`]; the integrator in [`tracer`]; the
@@ -120,10 +120,22 @@ impl CourseExact {
         Quantization::Truncate
     }
 
-    /// The staff library's estimate of a pixel that stopped early (3-2
-    /// only): measured 1/32 too bright at `-a 32 0.05` (section 8.1 of
-    /// `../shared/cs184-format.md`); modelled as the sum of its `n` samples
-    /// divided by `n - 1`, the off-by-one that gives it.
+    /// When a pixel's convergence test runs: every batch, or in 3-2 the
+    /// staff library's one sample later.
+    pub fn stop_rule(&self) -> pixel::StopRule {
+        match self.assignment {
+            Assignment::PathTracer1 => pixel::StopRule::EveryBatch,
+            Assignment::PathTracer2 => pixel::StopRule::StaffOneLate,
+        }
+    }
+
+    /// The staff library's pixel that stopped early (3-2 only), measured
+    /// on the 3-2 starter: having taken `n` samples (its test runs one
+    /// late, [`pixel::StopRule::StaffOneLate`]), it writes their sum over
+    /// `n - 1` and records `n - 1` samples: `n / (n - 1)` of their mean
+    /// (a constant pixel read 1.51, 1.34 and 1.26 at 2, 3 and 4 recorded;
+    /// section 8.1 of `../shared/cs184-format.md` reports 1/32 too bright
+    /// at `-a 32 0.05`).
     pub fn apply_staff_early_stop(&self, rendered: &mut Rendered, max_samples: u32) {
         if self.assignment != Assignment::PathTracer2 {
             return;
@@ -134,6 +146,7 @@ impl CourseExact {
                 let factor = n as f32 / (n - 1) as f32;
                 *pixel *= factor;
                 estimate.radiance *= factor;
+                estimate.samples = n - 1;
             }
         }
     }
@@ -158,19 +171,21 @@ mod tests {
         Rendered::new(3, 1, estimates.to_vec(), stats)
     }
 
-    /// 3-2's staff library: a pixel that stopped early at `n` samples is
-    /// `n / (n - 1)` of its mean; one that took every sample is as it is;
-    /// 3-1 (a student's own part 5) changes nothing.
+    /// 3-2's staff library: a pixel that stopped early having taken `n`
+    /// samples is `n / (n - 1)` of their mean and records `n - 1`; one
+    /// that took every sample is as it is; 3-1 (a student's own part 5)
+    /// changes nothing.
     #[test]
     fn pixels_that_stop_early_take_the_staffs_factor_in_3_2_only() {
         let staff = CourseExact {
             assignment: Assignment::PathTracer2,
         };
-        let mut image = rendered([32, 64, 96]);
+        let mut image = rendered([33, 64, 96]);
         staff.apply_staff_early_stop(&mut image, 64);
         let values: Vec<f32> = image.film.pixels.iter().map(|p| p.x).collect();
-        assert_eq!(values, [0.5 * 32.0 / 31.0, 0.5, 0.5]);
-        assert_eq!(image.estimates[0].radiance.x, 0.5 * 32.0 / 31.0);
+        assert_eq!(values, [0.5 * 33.0 / 32.0, 0.5, 0.5]);
+        assert_eq!(image.estimates[0].radiance.x, 0.5 * 33.0 / 32.0);
+        assert_eq!(image.estimates[0].samples, 32);
         let student = CourseExact {
             assignment: Assignment::PathTracer1,
         };

@@ -40,7 +40,7 @@ use glam::Vec3;
 
 use crate::global::CONTINUE_PROBABILITY;
 use crate::intersect::{Hit, Intersector, Ray};
-use crate::lights::{EmitterRole, Light};
+use crate::lights::Light;
 use crate::materials::{Bsdf, BsdfSample};
 use crate::math::Rgb;
 use crate::mistakes::{self, Mistake, Mistakes};
@@ -212,18 +212,10 @@ impl StarterTracer {
     ) -> Rgb {
         match self.lamps {
             Lamps::MeshFaces => world.material(hit).emission(),
-            Lamps::LightQuads => {
-                let lamp_mesh = matches!(
-                    world.lights.role(hit.primitive),
-                    EmitterRole::Shown { light: Some(_) }
-                );
-                let surface = if lamp_mesh {
-                    Rgb::ZERO
-                } else {
-                    world.material(hit).emission()
-                };
-                surface + self.quads_radiance(world, ray, hit.t)
-            }
+            // The 3-2 starter's loader gives every emissive surface the
+            // emission direction 0 (`EmissionBSDF(radiance, 0)`, emitting
+            // `radiance max(0, dir . wo)`): only the lights' quads glow.
+            Lamps::LightQuads => self.quads_radiance(world, ray, hit.t),
         }
     }
 

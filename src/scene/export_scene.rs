@@ -257,6 +257,7 @@ fn used_materials(scene: &Scene) -> Vec<u32> {
 /// file space, and one `<polylist>` of them.
 fn write_mesh(scene: &Scene, materials: &[u32], doc: &mut String) {
     let mesh = &scene.mesh;
+    let positions = behind_their_lights(scene);
     let intended = if mesh.normals.len() == mesh.positions.len() {
         mesh.normals.clone()
     } else {
@@ -270,7 +271,7 @@ fn write_mesh(scene: &Scene, materials: &[u32], doc: &mut String) {
             .filter(|(_, &tm)| tm == m)
             .map(|(t, _)| *t)
             .collect();
-        let triangles = wound_for_the_course(&mesh.positions, &intended, &triangles);
+        let triangles = wound_for_the_course(&positions, &intended, &triangles);
         // The vertices these triangles use, numbered anew in order of use.
         let mut local = std::collections::HashMap::new();
         let mut used = Vec::new();
@@ -291,7 +292,7 @@ fn write_mesh(scene: &Scene, materials: &[u32], doc: &mut String) {
             3 * n
         );
         for &v in &used {
-            let _ = write!(doc, "{} ", triple(to_file(mesh.positions[v as usize])));
+            let _ = write!(doc, "{} ", triple(to_file(positions[v as usize])));
         }
         let _ = write!(
             doc,
@@ -305,6 +306,51 @@ fn write_mesh(scene: &Scene, materials: &[u32], doc: &mut String) {
         }
         doc.push_str("</p></polylist></mesh></geometry>");
     }
+}
+
+/// How far behind its area light a lamp mesh is written: far enough
+/// that no ray finds the two at one distance in `f32` or `f64`, near
+/// enough to change no image.
+pub const LAMP_SETBACK: f32 = 1e-5;
+
+/// The mesh's positions, each vertex of an emissive triangle that lies in
+/// an area light's plane moved [`LAMP_SETBACK`] behind it (against the
+/// direction it emits). The course's boxes hold a lamp mesh in the plane
+/// of their light, and a 3-2 binary turns the light into triangles of
+/// its own, which then meet the mesh at one distance: which one a ray
+/// sees turns on differences of 1e-8 between the file's numbers read as
+/// `f32` (the mesh) and as `f64` (the light), measured on the 3-2
+/// starter. Behind its light, the mesh is never seen first.
+fn behind_their_lights(scene: &Scene) -> Vec<Vec3> {
+    let mesh = &scene.mesh;
+    let mut positions = mesh.positions.clone();
+    let planes: Vec<(Vec3, Vec3)> = scene
+        .lights
+        .iter()
+        .filter_map(|l| match *l {
+            Light::Area {
+                center, direction, ..
+            } => Some((center, direction.normalize_or_zero())),
+            _ => None,
+        })
+        .collect();
+    let mut moved = vec![false; positions.len()];
+    for (t, &m) in mesh.triangles.iter().zip(&mesh.materials) {
+        if scene.materials[m as usize].emission() == crate::math::Rgb::ZERO {
+            continue;
+        }
+        for &(center, n) in &planes {
+            let in_plane = |v: u32| (mesh.positions[v as usize] - center).dot(n).abs() < 1e-4;
+            if t.iter().all(|&v| in_plane(v)) {
+                for &v in t {
+                    if !std::mem::replace(&mut moved[v as usize], true) {
+                        positions[v as usize] -= LAMP_SETBACK * n;
+                    }
+                }
+            }
+        }
+    }
+    positions
 }
 
 /// `triangles` with each connected part wound so that the normals the

@@ -101,9 +101,14 @@ impl Bench {
                 (which, found.path.to_string_lossy().into_owned(), stage)
             })
             .collect();
+        let lambertian = scenes
+            .iter()
+            .find(|s| s.0 == CheckScene::Lambertian)
+            .unwrap()
+            .clone();
         Bench {
-            scene_file: scenes[0].1.clone(),
-            stage: scenes[0].2,
+            scene_file: lambertian.1.clone(),
+            stage: lambertian.2,
             scenes,
             dir,
         }
