@@ -380,8 +380,9 @@ fn a_broken_binary_gets_a_clear_line() {
         Duration::from_millis(300),
     );
     let r = judge(&check, &hang, caps, &bench.scene_file, bench.stage, 1e-3, 2);
+    // Too slow is not wrong: the line says so, and how to speed it up.
     assert!(
-        matches!(&r.outcome, Outcome::Error(why) if why.contains("within")),
+        matches!(&r.outcome, Outcome::Error(why) if why.starts_with("too slow") && why.contains("Release") && why.contains("--timeout")),
         "{r:?}"
     );
     // A binary without -o: the check that needs it is skipped, saying so.

@@ -68,7 +68,11 @@ impl fmt::Display for RunError {
         match self {
             RunError::Missing(p) => write!(f, "{}: no such file", p.display()),
             RunError::NotExecutable(p, e) => write!(f, "{}: cannot run it: {e}", p.display()),
-            RunError::TimedOut(t) => write!(f, "no image within {} s (stopped)", t.as_secs()),
+            RunError::TimedOut(t) => write!(
+                f,
+                "too slow: no image within {} s (stopped), which says nothing of right or wrong; build it Release (cmake -DCMAKE_BUILD_TYPE=Release), check that your BVH prunes (part 2), or allow more with --timeout",
+                t.as_secs()
+            ),
             RunError::Crashed(how) => write!(f, "it crashed: {how}"),
             RunError::NoImage(p) => write!(f, "it exited without writing {}", p.display()),
             RunError::Unreadable(p, e) => {
