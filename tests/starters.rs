@@ -10,7 +10,8 @@
 //!   crash, and `check` exits with 1;
 //! - the 3-2 starter's parts 2 to 5, the staff's library, pass, and its
 //!   parts 6 to 8, still the starter's, are "not written yet";
-//! - a binary that does not exist makes `check` exit with 2.
+//! - a binary that does not exist makes `check` exit with 2;
+//! - every starter file the checker names is in every starter.
 
 #![cfg(unix)]
 
@@ -103,6 +104,30 @@ fn build(source: &Path) -> PathBuf {
     }
     assert!(binary.exists(), "{} was not built", binary.display());
     binary
+}
+
+/// Every file a check or a "not written yet" names is a file of each
+/// starter (the 3-1 starters hold 3-2's files too).
+#[test]
+fn every_file_the_checker_names_is_in_the_starters() {
+    let Some(dir) = std::env::var_os("CS184_STARTER_DIR") else {
+        assert!(std::env::var("CI").as_deref() != Ok("true"));
+        return;
+    };
+    let mut checks =
+        pathtracer::check::battery::battery_of(pathtracer::course::Assignment::PathTracer2);
+    checks.extend(pathtracer::check::battery(&[1]));
+    let named = checks.iter().flat_map(|c| c.file.split(", ")).chain(
+        pathtracer::check::unwritten::FILES
+            .iter()
+            .flat_map(|f| f.split(", ")),
+    );
+    for file in named {
+        for starter in STARTERS {
+            let path = PathBuf::from(&dir).join(starter).join(file);
+            assert!(path.is_file(), "{} is not a file", path.display());
+        }
+    }
 }
 
 /// Runs `check` with `args`: its exit code and its standard output.

@@ -70,6 +70,8 @@ pub struct Check {
     pub name: &'static str,
     /// The starter function it exercises most.
     pub function: &'static str,
+    /// That function's file in the starter.
+    pub file: &'static str,
     /// `-H`.
     pub hemisphere: bool,
     /// `-l`.
@@ -142,6 +144,7 @@ fn every_check() -> Vec<Check> {
         scene: CheckScene::Lambertian,
         name: "direct light, uniform hemisphere (-H -m 1)",
         function: "PathTracer::estimate_direct_lighting_hemisphere",
+        file: "src/pathtracer/pathtracer.cpp",
         hemisphere: true,
         light_samples: 1,
         max_depth: 1,
@@ -157,6 +160,7 @@ fn every_check() -> Vec<Check> {
             scene: CheckScene::Glowing,
             name: "first hits of camera rays (-m 0)",
             function: "Camera::generate_ray, Triangle::intersect, Sphere::intersect",
+            file: "src/pathtracer/camera.cpp, src/scene/triangle.cpp, src/scene/sphere.cpp",
             hemisphere: false,
             max_depth: 0,
             spp: 4,
@@ -167,6 +171,7 @@ fn every_check() -> Vec<Check> {
             scene: CheckScene::Mesh,
             name: "a mesh, direct light (-m 1 -l 1)",
             function: "BVHAccel::intersect",
+            file: "src/scene/bvh.cpp, src/scene/bbox.cpp",
             hemisphere: false,
             spp: 4,
             ..direct
@@ -217,6 +222,7 @@ fn every_check() -> Vec<Check> {
             scene: CheckScene::Specular,
             name: "mirror and glass (-m 6)",
             function: "GlassBSDF::sample_f",
+            file: "src/pathtracer/advanced_bsdf.cpp",
             hemisphere: false,
             max_depth: 6,
             spp: 4,
@@ -228,6 +234,7 @@ fn every_check() -> Vec<Check> {
             scene: CheckScene::Microfacet,
             name: "rough metal (-m 2)",
             function: "MicrofacetBSDF::f / sample_f",
+            file: "src/pathtracer/advanced_bsdf.cpp",
             hemisphere: false,
             max_depth: 2,
             spp: 4,
@@ -239,6 +246,7 @@ fn every_check() -> Vec<Check> {
             scene: CheckScene::Sky,
             name: "environment light (-e, -l 4 -m 1)",
             function: "EnvironmentLight::sample_L",
+            file: "src/scene/environment_light.cpp",
             hemisphere: false,
             light_samples: 4,
             max_depth: 1,
@@ -251,6 +259,7 @@ fn every_check() -> Vec<Check> {
             assignment: Assignment::PathTracer2,
             name: "thin lens (-b 0.5 -d 3.8)",
             function: "Camera::generate_ray_for_thin_lens",
+            file: "src/pathtracer/camera_lens.cpp",
             hemisphere: false,
             max_depth: 1,
             spp: 4,

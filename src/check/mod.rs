@@ -79,7 +79,10 @@ pub fn table(results: &[CheckResult]) -> String {
     for r in results {
         let (mistake, function) = match (&r.outcome, r.outcome.likely_mistake()) {
             (_, Some(m)) => (m.to_string(), m.info().function.to_string()),
-            (Outcome::Fail { .. }, None) => ("none known fits".into(), r.check.function.into()),
+            (Outcome::Fail { .. }, None) => (
+                "none known fits".into(),
+                format!("{} ({})", r.check.function, r.check.file),
+            ),
             (Outcome::NotWritten(u), None) => (
                 format!("not written yet (part {})", u.part),
                 format!("{} ({})", u.function, u.file),

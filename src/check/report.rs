@@ -108,10 +108,11 @@ fn section(i: usize, r: &CheckResult) -> String {
         )
     };
     let mut html = format!(
-        r#"<section id="check-{i}"><h2>Part {}: {} <span class="{v}">{v}</span></h2><p>Starter function: <code>{}</code>. {run}</p>"#,
+        r#"<section id="check-{i}"><h2>Part {}: {} <span class="{v}">{v}</span></h2><p>Starter function: <code>{}</code> in <code>{}</code>. {run}</p>"#,
         c.part,
         escape(c.name),
         c.function,
+        c.file,
         v = r.outcome.word()
     );
     match &r.outcome {

@@ -94,6 +94,17 @@ const ENVIRONMENT: Unwritten = Unwritten {
     shows: "the image is black: the map gives no light",
 };
 
+/// Every starter file a "not written yet" names.
+pub const FILES: [&str; 7] = [
+    RAYTRACE_PIXEL.file,
+    GENERATE_RAY.file,
+    THIN_LENS.file,
+    INTERSECT.file,
+    DIRECT_LIGHT.file,
+    ENVIRONMENT.file,
+    "src/pathtracer/advanced_bsdf.cpp",
+];
+
 /// Part 3's functions as handed out (`Vector3D(1.0)` each), named for
 /// `check`: the estimator it exercises, else the two that call them.
 fn placeholder_one(check: &Check) -> Unwritten {
