@@ -15,7 +15,8 @@
 use std::error::Error;
 
 use pathtracer::bvh::WideBvhAccel;
-use pathtracer::course::{Assignment, CourseExact, Lamps, StarterDirect, StarterTracer};
+use pathtracer::course::pixel::StopRule;
+use pathtracer::course::{Assignment, Choices, CourseExact, Lamps, StarterDirect, StarterTracer};
 use pathtracer::direct::DirectHemisphere;
 use pathtracer::global::{DirectStrategy, PathTracer, Roulette};
 use pathtracer::intersect::Primitives;
@@ -100,14 +101,9 @@ fn main() -> Result<(), Box<dyn Error>> {
                     let mut rendered = render_image(&camera, &settings, adaptive, |ray, s| {
                         tracer.radiance(&world, ray, s)
                     });
-                    let exact = CourseExact {
-                        assignment: if staff {
-                            Assignment::PathTracer2
-                        } else {
-                            Assignment::PathTracer1
-                        },
-                    };
-                    exact.apply_staff_early_stop(&mut rendered, spp);
+                    if staff {
+                        StopRule::StaffOneLate.write_stopped(&mut rendered, spp);
+                    }
                     rendered
                 }
                 Renderer::Project { options, tracer } => {
@@ -193,6 +189,7 @@ fn starter(max_depth: u32, lamps: Lamps, direct: StarterDirect) -> StarterTracer
         max_depth,
         accumulate: true,
         lamps,
+        choices: Choices::of(Assignment::PathTracer1),
         mistakes: Mistakes::NONE,
     }
 }

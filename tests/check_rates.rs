@@ -12,7 +12,10 @@ mod bench;
 
 use std::time::Duration;
 
-use bench::{others_that_fit, refusing, report_is_whole, script, stand_in, Bench, PATHTRACER};
+use bench::{
+    others_that_fit, refusing, report_is_whole, script, stand_in, stand_in_choosing, Bench,
+    PATHTRACER,
+};
 use pathtracer::adaptive::Adaptive;
 use pathtracer::check::battery::SIZE;
 use pathtracer::check::rates::RATE_ROUNDING;
@@ -94,6 +97,24 @@ fn part_5_mistakes_fail_and_are_named_first() {
 /// model at `alpha` = 0.1. At a true rate of 10 % or less, 8 or more
 /// alarms in 16 happen with probability below 1e-4 (binomial tail,
 /// 6.1e-5).
+/// A 3-1 solution that tests convergence one sample late and writes a
+/// pixel that stopped as the staff's library does (`n / (n - 1)` of its
+/// mean, `n - 1` samples) fails the handout's model and passes as that
+/// variant.
+#[test]
+fn the_staffs_stop_rule_passes_as_that_variant() {
+    let bench = Bench::new();
+    let binary = stand_in_choosing(bench.dir.path(), &["stop=staff"], 4);
+    let r = bench.run(binary, &[part5()]).remove(0);
+    let Outcome::Pass { variant, .. } = r.outcome else {
+        panic!("{:?}", r.outcome);
+    };
+    assert_eq!(
+        variant,
+        Some("tests convergence one sample late, as the staff's library does")
+    );
+}
+
 #[test]
 fn the_rate_statistics_false_alarms_are_bounded() {
     let bench = Bench::new();

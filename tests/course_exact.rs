@@ -14,7 +14,7 @@ use std::f64::consts::PI;
 
 use common::*;
 use glam::{DVec3, Vec3};
-use pathtracer::course::{Assignment, CourseExact, Lamps, StarterDirect, StarterTracer};
+use pathtracer::course::{Assignment, Choices, CourseExact, Lamps, StarterDirect, StarterTracer};
 use pathtracer::direct::DirectLights;
 use pathtracer::global::{DirectStrategy, PathTracer, Roulette};
 use pathtracer::intersect::Ray;
@@ -53,6 +53,7 @@ fn starter(direct: StarterDirect, max_depth: u32, accumulate: bool, lamps: Lamps
         max_depth,
         accumulate,
         lamps,
+        choices: Choices::of(Assignment::PathTracer1),
         mistakes: Mistakes::NONE,
     }
 }

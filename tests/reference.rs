@@ -19,7 +19,7 @@
 mod common;
 
 use pathtracer::cli::drivers::render_lighting;
-use pathtracer::course::{Assignment, CourseExact, Lamps, StarterDirect, StarterTracer};
+use pathtracer::course::{Assignment, Choices, CourseExact, Lamps, StarterDirect, StarterTracer};
 use pathtracer::direct::DirectLights;
 use pathtracer::global::{DirectStrategy, PathTracer, Roulette};
 use pathtracer::math::{luminance, Rgb};
@@ -166,6 +166,7 @@ fn cbbunny_framing_and_brightness_against_the_course_render() {
         max_depth: 5,
         accumulate: true,
         lamps: Lamps::MeshFaces,
+        choices: Choices::of(Assignment::PathTracer1),
         mistakes: Mistakes::NONE,
     };
     let course = render_image(camera, &settings, None, |ray, sampler| {

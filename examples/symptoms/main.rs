@@ -26,7 +26,8 @@ use std::path::Path;
 
 use pathtracer::adaptive::Adaptive;
 use pathtracer::course::{
-    Assignment, CourseExact, CourseSampling, CourseView, Lamps, StarterDirect, StarterTracer,
+    Assignment, Choices, CourseExact, CourseSampling, CourseView, Lamps, StarterDirect,
+    StarterTracer,
 };
 use pathtracer::math::{luminance, ratio_colour, Rgb};
 use pathtracer::mistakes::{Mistake, Mistakes};
@@ -50,6 +51,7 @@ fn render(staged: &Staged, how: &Showing, mistakes: Mistakes, threads: usize) ->
         max_depth: how.max_depth,
         accumulate: how.accumulate,
         lamps: Lamps::MeshFaces,
+        choices: Choices::of(Assignment::PathTracer1),
         mistakes,
     };
     let view = CourseView {

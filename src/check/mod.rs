@@ -43,6 +43,7 @@ pub mod stage;
 pub mod stats;
 pub mod student;
 pub mod unwritten;
+pub mod variants;
 pub mod verdict;
 pub mod words;
 

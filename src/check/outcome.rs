@@ -24,12 +24,16 @@ pub enum Outcome {
     /// ([`super::stats::statistic`] and its chi-square quantile) and
     /// `region <= region_threshold` (the region test, [`super::scan`]: the
     /// largest window sum `max |S_w|` over the image's windows). A check
-    /// with `-a` holds its rate image's sum in [`RateImages`].
+    /// with `-a` holds its rate image's sum in [`RateImages`]. The values
+    /// are those of the model it fits.
     Pass {
         statistic: f64,
         threshold: f64,
         region: f64,
         region_threshold: f64,
+        /// What the correct solution it fits chose, when not the course's
+        /// ([`super::variants::Variant::chose`]).
+        variant: Option<&'static str>,
     },
     /// One test failed or both (the values as for a pass; `what` says
     /// which, and where).

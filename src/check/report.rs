@@ -121,10 +121,15 @@ fn section(i: usize, r: &CheckResult) -> String {
             threshold,
             region,
             region_threshold,
+            variant,
         } => {
+            let whose = match variant {
+                Some(chose) => format!("a correct solution that {chose}"),
+                None => "a correct solution".into(),
+            };
             let _ = write!(
                 html,
-                "<p>Within the noise of a correct solution. {}</p>",
+                "<p>Within the noise of {whose}. {}</p>",
                 test_values(*statistic, *threshold, *region, *region_threshold)
             );
         }

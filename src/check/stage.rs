@@ -13,7 +13,9 @@ use super::battery::{Check, SIZE};
 use super::rates;
 use super::unwritten::Shadings;
 use crate::bvh::WideBvhAccel;
-use crate::course::{CourseExact, CourseSampling, CourseView, StarterDirect, StarterTracer};
+use crate::course::{
+    Choices, CourseExact, CourseSampling, CourseView, StarterDirect, StarterTracer,
+};
 use crate::depth_of_field::ThinLens;
 use crate::environment::EnvironmentLight;
 use crate::intersect::{Intersector, Primitives};
@@ -108,14 +110,29 @@ impl Stage {
     /// `check` with `seed`: its PNG's values and, with `-a`, its rate
     /// image's fractions. Neither depends on `threads`.
     pub fn render(&self, check: &Check, mistakes: Mistakes, seed: u64, threads: usize) -> Render {
+        let choices = Choices::of(check.assignment);
+        self.render_chosen(check, choices, mistakes, seed, threads)
+    }
+
+    /// What a course solution with `choices` (and `mistakes`) writes for
+    /// `check` with `seed`, as [`Stage::render`].
+    pub fn render_chosen(
+        &self,
+        check: &Check,
+        choices: Choices,
+        mistakes: Mistakes,
+        seed: u64,
+        threads: usize,
+    ) -> Render {
+        let solution = (choices, mistakes);
         let Some(kept) = &self.kept else {
-            return self.render_anew(check, mistakes, seed, threads, &|_, _| 1.0);
+            return self.render_anew(check, solution, seed, threads, &|_, _| 1.0);
         };
-        let key = format!("{check:?} {mistakes:?} {seed}");
+        let key = format!("{check:?} {choices:?} {mistakes:?} {seed}");
         if let Some(render) = kept.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
             return render.clone();
         }
-        let render = self.render_anew(check, mistakes, seed, threads, &|_, _| 1.0);
+        let render = self.render_anew(check, solution, seed, threads, &|_, _| 1.0);
         kept.lock()
             .unwrap_or_else(|e| e.into_inner())
             .insert(key, render.clone());
@@ -134,13 +151,15 @@ impl Stage {
         threads: usize,
         gain: &dyn Fn(usize, usize) -> f32,
     ) -> Render {
-        self.render_anew(check, Mistakes::NONE, seed, threads, gain)
+        let solution = (Choices::of(check.assignment), Mistakes::NONE);
+        self.render_anew(check, solution, seed, threads, gain)
     }
 
+    /// A render of `solution`: its choices, and the mistakes it makes.
     fn render_anew(
         &self,
         check: &Check,
-        mistakes: Mistakes,
+        (choices, mistakes): (Choices, Mistakes),
         seed: u64,
         threads: usize,
         gain: &dyn Fn(usize, usize) -> f32,
@@ -154,6 +173,7 @@ impl Stage {
             max_depth: check.max_depth,
             accumulate: check.accumulate,
             lamps: exact.lamps(),
+            choices,
             mistakes,
         };
         let mut camera = self.camera;

@@ -1,7 +1,9 @@
 //! One check, decided: the student's render against the null model
 //! ([`super::stats`]), what differs and where, and the catalogued mistakes
 //! whose images fit it, best first. A check with `-a` also holds the
-//! student's rate image against the null renders' ([`super::rates`]).
+//! student's rate image against the null renders' ([`super::rates`]). An
+//! image that fails the course's solution may fit another correct one
+//! ([`super::variants`]): then it passes, and the outcome says which.
 
 use super::battery::{Check, Render, Stage, SIZE};
 use super::patterns;
@@ -10,6 +12,7 @@ use super::scan::{scan, Scan, WINDOW};
 use super::stats::{self, chi_square_quantile, NullModel, BLOCK};
 use super::student::{Capabilities, Student};
 use super::unwritten;
+use super::variants;
 use super::words::{describe, differing_blocks};
 use crate::course::Assignment;
 use crate::math::{luminance, Rgb};
@@ -251,19 +254,44 @@ pub fn judge(
             threshold: d.threshold,
         }),
     };
-    let (statistic, threshold) = (decided[0].statistic, decided[0].threshold);
-    let (region, region_threshold) = (decided[0].scan.value, decided[0].scan.threshold);
+    let pass = |decided: &[Decided], variant: Option<&'static str>| {
+        result(Outcome::Pass {
+            statistic: decided[0].statistic,
+            threshold: decided[0].threshold,
+            region: decided[0].scan.value,
+            region_threshold: decided[0].scan.threshold,
+            variant,
+        })
+    };
     if decided.iter().all(Decided::passes) {
         return CheckResult {
             images: Some(images),
-            ..result(Outcome::Pass {
-                statistic,
-                threshold,
-                region,
-                region_threshold,
-            })
+            ..pass(&decided, None)
         };
     }
+    for variant in variants::of(check) {
+        let renders: Vec<Render> = (0..NULL_RENDERS as u64)
+            .map(|seed| {
+                stage.render_chosen(check, variant.choices, Mistakes::NONE, 4000 + seed, threads)
+            })
+            .collect();
+        let judged: Vec<Decided> = planes
+            .iter()
+            .zip(&models)
+            .map(|(p, m)| {
+                let model = p.model(&renders).widened(m);
+                Decided::new(&p.cells(&written), &model, alpha, p.channels())
+            })
+            .collect();
+        if judged.iter().all(Decided::passes) {
+            return CheckResult {
+                images: Some(images),
+                ..pass(&judged, Some(variant.chose))
+            };
+        }
+    }
+    let (statistic, threshold) = (decided[0].statistic, decided[0].threshold);
+    let (region, region_threshold) = (decided[0].scan.value, decided[0].scan.threshold);
     if check.part == 6 {
         // The starter's BSDFs of part 6 return zero: its surfaces black.
         let black = Stage::new(unwritten::blackened(stage.scene()));

@@ -54,6 +54,24 @@ pub const BUILTIN_DEFAULTS: Defaults = Defaults {
 };
 
 /// The course's flags that apply to parts 1 to 5.
+/// The flags of this project's own rendering, which `--course-exact`,
+/// `--mistake` and `--course-choice` (the course's image) exclude.
+const BEYOND_THE_COURSE: [&str; 13] = [
+    "course",
+    "sampler",
+    "roulette",
+    "casters",
+    "glass_splits",
+    "glints",
+    "bsdf_only",
+    "no_mis",
+    "course_lights",
+    "schlick",
+    "microfacet_sampling",
+    "light_choice",
+    "no_plan",
+];
+
 #[derive(Parser, Clone, Debug, PartialEq)]
 #[command(version, about, args_override_self = true)]
 pub struct CourseArgs {
@@ -253,19 +271,26 @@ pub struct CourseArgs {
     /// it, 3-1 for parts 1 to 5 and 3-2 for parts 6 to 8 and `pathtracer`.
     #[arg(long, value_enum, value_name = "ASSIGNMENT", num_args = 0..=1,
           require_equals = true,
-          conflicts_with_all = ["course", "sampler", "roulette", "casters", "glass_splits", "glints", "bsdf_only",
-                                "no_mis", "course_lights", "schlick", "microfacet_sampling",
-                                "light_choice", "no_plan"])]
+          conflicts_with_all = BEYOND_THE_COURSE)]
     pub course_exact: Option<Option<AssignmentArg>>,
 
     /// Make one of the catalogue's mistakes students make, to see what it
     /// looks like (repeatable; implies --course-exact); `--mistake list`
     /// prints the catalogue (docs/13-symptoms.md).
     #[arg(long = "mistake", value_name = "NAME",
-          conflicts_with_all = ["course", "sampler", "roulette", "casters", "glass_splits", "glints", "bsdf_only",
-                                "no_mis", "course_lights", "schlick", "microfacet_sampling",
-                                "light_choice", "no_plan"])]
+          conflicts_with_all = BEYOND_THE_COURSE)]
     pub mistakes: Vec<String>,
+
+    /// A choice the handout leaves to the student, for the image of a
+    /// correct solution that made it (repeatable; implies
+    /// --course-exact), as KEY=VALUE: `roulette-q=Q`, roulette's continuation
+    /// probability (0.65 by default); `roulette-from=1` or `2`, the first
+    /// vertex whose bounce its coin decides (1, the camera ray's hit; 2,
+    /// the course's); `stop=handout` or `staff`, adaptive sampling's test
+    /// every batch or one sample late (3-2's default).
+    #[arg(long = "course-choice", value_name = "KEY=VALUE",
+          conflicts_with_all = BEYOND_THE_COURSE)]
+    pub course_choices: Vec<String>,
 }
 
 /// `part2-bvh`'s flags: the course's, plus the benchmarks.

@@ -312,6 +312,7 @@ mod tests {
             threshold: 2.0,
             region: 1.0,
             region_threshold: 2.0,
+            variant: None,
         });
         let skipped = result(Outcome::Skipped("no -o".into()));
         let error = result(Outcome::Error("it crashed".into()));

@@ -6,7 +6,8 @@ use std::path::{Path, PathBuf};
 
 use super::args::*;
 use crate::adaptive::Adaptive;
-use crate::course::{Assignment, CourseExact};
+use crate::course::pixel::StopRule;
+use crate::course::{Assignment, Choices, CourseExact};
 use crate::depth_of_field::ThinLens;
 use crate::global::Roulette;
 use crate::lights::LightConvention;
@@ -139,11 +140,11 @@ impl CourseArgs {
 
     /// The course's image settings when `--course-exact` is given: its
     /// assignment, else `default` (the binary's).
-    /// `--mistake` alone implies it, with the binary's assignment.
+    /// `--mistake` or `--course-choice` alone implies it, with the binary's assignment.
     pub fn course_exact(&self, default: Assignment) -> Option<CourseExact> {
         let assignment = match self.course_exact {
             Some(named) => named.map_or(default, Assignment::from),
-            None if !self.mistakes.is_empty() => default,
+            None if !self.mistakes.is_empty() || !self.course_choices.is_empty() => default,
             None => return None,
         };
         Some(CourseExact { assignment })
@@ -161,6 +162,48 @@ impl CourseArgs {
                 )
             })
         })
+    }
+
+    /// The choices of the solution `--course-exact` renders: `assignment`'s
+    /// ([`Choices::of`]) with each `--course-choice` applied, or an error
+    /// naming the one that is wrong.
+    pub fn course_choices(&self, assignment: Assignment) -> Result<Choices, String> {
+        self.course_choices
+            .iter()
+            .try_fold(Choices::of(assignment), |choices, given| {
+                let wrong = |why: &str| format!("--course-choice {given}: {why}");
+                let (key, value) = given
+                    .split_once('=')
+                    .ok_or_else(|| wrong("not KEY=VALUE"))?;
+                match key {
+                    "roulette-q" => match value.parse::<f32>() {
+                        Ok(q) if q > 0.0 && q <= 1.0 => Ok(Choices {
+                            continue_probability: q,
+                            ..choices
+                        }),
+                        _ => Err(wrong("the probability must be a number in (0, 1]")),
+                    },
+                    "roulette-from" => match value {
+                        "1" | "2" => Ok(Choices {
+                            roulette_from: if value == "1" { 1 } else { 2 },
+                            ..choices
+                        }),
+                        _ => Err(wrong("the vertex must be 1 or 2")),
+                    },
+                    "stop" => match value {
+                        "handout" => Ok(Choices {
+                            stop_rule: StopRule::EveryBatch,
+                            ..choices
+                        }),
+                        "staff" => Ok(Choices {
+                            stop_rule: StopRule::StaffOneLate,
+                            ..choices
+                        }),
+                        _ => Err(wrong("the stop rule must be handout or staff")),
+                    },
+                    _ => Err(wrong("the keys are roulette-q, roulette-from and stop")),
+                }
+            })
     }
 
     /// Whether the flags ask for the catalogue (`--mistake list`).

@@ -1,8 +1,8 @@
 //! The course's whole image of a scene: the world as a course solution
 //! sees it ([`CourseExact::world_options`]), the starter's integrator
 //! ([`StarterTracer`]) in the starter's pixel loop ([`pixel::render`]),
-//! the environment map sampled by the handout's weights, and the staff
-//! library's mean of pixels that stop early. With one of
+//! the environment map sampled by the handout's weights, and pixels that
+//! stop early written as the solution's stop rule writes them. With one of
 //! parts 1 and 2's mistakes chosen, a student's BVH
 //! ([`StudentBvh`]) stands in for the given intersector.
 
@@ -54,7 +54,8 @@ impl CourseExact {
             )
         };
         if sampling.adaptive.is_some() {
-            self.apply_staff_early_stop(&mut rendered, sampling.settings.samples_per_pixel);
+            (tracer.choices.stop_rule)
+                .write_stopped(&mut rendered, sampling.settings.samples_per_pixel);
         }
         rendered
     }
@@ -83,7 +84,7 @@ impl CourseExact {
         pixel::render(
             camera,
             &settings,
-            sampling.adaptive.map(|a| (a, self.stop_rule())),
+            sampling.adaptive.map(|a| (a, tracer.choices.stop_rule)),
             tracer.mistakes,
             |ray, s| tracer.radiance(world, ray, s),
         )

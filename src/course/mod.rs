@@ -28,10 +28,12 @@
 //! pixel loop and the camera, as the starter's `raytrace_pixel` and
 //! `generate_ray`, in [`pixel`].
 
+pub mod choices;
 pub mod image;
 pub mod pixel;
 pub mod tracer;
 
+pub use choices::Choices;
 pub use image::{CourseSampling, CourseView};
 pub use tracer::{Lamps, StarterDirect, StarterTracer};
 
@@ -41,7 +43,7 @@ use crate::lights::{LightChoiceRule, LightConvention};
 use crate::materials::{
     BsdfOptions, EtaScaling, FresnelModel, MicrofacetModel, MicrofacetSampling,
 };
-use crate::render::{Quantization, Rendered};
+use crate::render::Quantization;
 use crate::sampling::SamplerKind;
 use crate::world::{CasterRule, WorldOptions};
 
@@ -119,80 +121,11 @@ impl CourseExact {
     pub fn quantization(&self) -> Quantization {
         Quantization::Truncate
     }
-
-    /// When a pixel's convergence test runs: every batch, or in 3-2 the
-    /// staff library's one sample later.
-    pub fn stop_rule(&self) -> pixel::StopRule {
-        match self.assignment {
-            Assignment::PathTracer1 => pixel::StopRule::EveryBatch,
-            Assignment::PathTracer2 => pixel::StopRule::StaffOneLate,
-        }
-    }
-
-    /// The staff library's pixel that stopped early (3-2 only), measured
-    /// on the 3-2 starter: having taken `n` samples (its test runs one
-    /// late, [`pixel::StopRule::StaffOneLate`]), it writes their sum over
-    /// `n - 1` and records `n - 1` samples: `n / (n - 1)` of their mean
-    /// (a constant pixel read 1.51, 1.34 and 1.26 at 2, 3 and 4 recorded;
-    /// section 8.1 of `../shared/cs184-format.md` reports 1/32 too bright
-    /// at `-a 32 0.05`).
-    pub fn apply_staff_early_stop(&self, rendered: &mut Rendered, max_samples: u32) {
-        if self.assignment != Assignment::PathTracer2 {
-            return;
-        }
-        for (pixel, estimate) in rendered.film.pixels.iter_mut().zip(&mut rendered.estimates) {
-            let n = estimate.samples;
-            if n > 1 && n < max_samples {
-                let factor = n as f32 / (n - 1) as f32;
-                *pixel *= factor;
-                estimate.radiance *= factor;
-                estimate.samples = n - 1;
-            }
-        }
-    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::math::Rgb;
-    use crate::render::{PixelEstimate, RenderStats};
-
-    fn rendered(samples: [u32; 3]) -> Rendered {
-        let estimates = samples.map(|samples| PixelEstimate {
-            radiance: Rgb::splat(0.5),
-            samples,
-            ..PixelEstimate::default()
-        });
-        let stats = RenderStats {
-            seconds: 0.0,
-            threads: 1,
-        };
-        Rendered::new(3, 1, estimates.to_vec(), stats)
-    }
-
-    /// 3-2's staff library: a pixel that stopped early having taken `n`
-    /// samples is `n / (n - 1)` of their mean and records `n - 1`; one
-    /// that took every sample is as it is; 3-1 (a student's own part 5)
-    /// changes nothing.
-    #[test]
-    fn pixels_that_stop_early_take_the_staffs_factor_in_3_2_only() {
-        let staff = CourseExact {
-            assignment: Assignment::PathTracer2,
-        };
-        let mut image = rendered([33, 64, 96]);
-        staff.apply_staff_early_stop(&mut image, 64);
-        let values: Vec<f32> = image.film.pixels.iter().map(|p| p.x).collect();
-        assert_eq!(values, [0.5 * 33.0 / 32.0, 0.5, 0.5]);
-        assert_eq!(image.estimates[0].radiance.x, 0.5 * 33.0 / 32.0);
-        assert_eq!(image.estimates[0].samples, 32);
-        let student = CourseExact {
-            assignment: Assignment::PathTracer1,
-        };
-        let mut image = rendered([32, 64, 96]);
-        student.apply_staff_early_stop(&mut image, 64);
-        assert!(image.film.pixels.iter().all(|p| p.x == 0.5));
-    }
 
     /// Each item of the switch is the course's: lights, Fresnel, microfacet
     /// formulas and sampler, radiance across glass, light choice, no

@@ -9,7 +9,8 @@
 //!     + f |cos| / (pdf q) [ at_least_one_bounce_radiance(r', k + 1)
 //!                           + zero_bounce_radiance(r') if the BSDF is a delta ]
 //!                                                (k < m, and the coin comes up, q = 0.65
-//!                                                 from the second vertex on)
+//!                                                 from the second vertex on, or
+//!                                                 another of [`Choices`])
 //! estimate_direct_lighting_hemisphere = 1/N sum f L_e(w_j) cos / (1 / 2 pi),
 //!     N = (number of lights) x -l, L_e what the ray's first hit emits
 //! estimate_direct_lighting_importance = sum over lights 1/N_l sum f L cos / pdf,
@@ -38,7 +39,7 @@
 
 use glam::Vec3;
 
-use crate::global::CONTINUE_PROBABILITY;
+use super::Choices;
 use crate::intersect::{Hit, Intersector, Ray};
 use crate::lights::Light;
 use crate::materials::{Bsdf, BsdfSample};
@@ -93,6 +94,9 @@ pub struct StarterTracer {
     /// `-o 1`: `isAccumBounces`.
     pub accumulate: bool,
     pub lamps: Lamps,
+    /// What the handout leaves open: roulette's `q` and first vertex, the
+    /// adaptive stop rule.
+    pub choices: Choices,
     /// The catalogue's mistakes to make (none: a correct solution).
     pub mistakes: Mistakes,
 }
@@ -270,8 +274,8 @@ impl StarterTracer {
         if k >= self.max_depth() {
             return l;
         }
-        let q = if k > 1 { CONTINUE_PROBABILITY } else { 1.0 };
-        if k > 1 && sampler.get_1d() >= q {
+        let q = self.choices.continue_probability_at(k);
+        if q < 1.0 && sampler.get_1d() >= q {
             return l;
         }
         let (uc, u) = (sampler.get_1d(), sampler.get_2d());

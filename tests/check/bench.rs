@@ -66,6 +66,23 @@ pub fn stand_in_of(
     )
 }
 
+/// A stand-in student of assignment 3-1 whose correct solution made the
+/// handout's `choices` (`--course-choice KEY=VALUE` each), at `seed`.
+pub fn stand_in_choosing(dir: &Path, choices: &[&str], seed: u64) -> PathBuf {
+    let flags: Vec<String> = choices
+        .iter()
+        .map(|c| format!("--course-choice {c}"))
+        .collect();
+    script(
+        dir,
+        &format!("student-3-1-{}-{seed}.sh", choices.join("-")),
+        &format!(
+            "exec {PATHTRACER} --course-exact=3-1 {} --seed {seed} \"$@\"",
+            flags.join(" ")
+        ),
+    )
+}
+
 pub struct Bench {
     pub dir: tempfile::TempDir,
     /// The diffuse box's file and stage ([`CheckScene::Lambertian`]).
@@ -164,9 +181,11 @@ pub fn all_pass(results: Vec<CheckResult>) {
                 threshold,
                 region,
                 region_threshold,
+                variant,
             } => eprintln!(
-                "{}: {statistic:.1} of {threshold:.1}, region {region:.1} of {region_threshold:.1}",
-                r.check.name
+                "{}: {statistic:.1} of {threshold:.1}, region {region:.1} of {region_threshold:.1}{}",
+                r.check.name,
+                variant.map(|v| format!(", as a solution that {v}")).unwrap_or_default()
             ),
             other => panic!("{}: {other:?}", r.check.name),
         }
@@ -198,6 +217,7 @@ pub fn report_is_whole(results: &[CheckResult], dir: &Path) {
             threshold,
             region,
             region_threshold,
+            ..
         }
         | Outcome::Fail {
             statistic,

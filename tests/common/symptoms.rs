@@ -4,7 +4,9 @@
 
 use pathtracer::adaptive::Adaptive;
 use pathtracer::bvh::BvhAccel;
-use pathtracer::course::{self, Assignment, CourseExact, Lamps, StarterDirect, StarterTracer};
+use pathtracer::course::{
+    self, Assignment, Choices, CourseExact, Lamps, StarterDirect, StarterTracer,
+};
 use pathtracer::depth_of_field::ThinLens;
 use pathtracer::environment::EnvironmentLight;
 use pathtracer::intersect::{Intersector, Primitives};
@@ -253,6 +255,7 @@ pub fn starter_tracer(
         max_depth,
         accumulate,
         lamps: Lamps::MeshFaces,
+        choices: Choices::of(Assignment::PathTracer1),
         mistakes: Mistakes::of(mistakes),
     }
 }

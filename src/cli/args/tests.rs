@@ -155,3 +155,50 @@ fn bad_values_are_refused() {
         assert!(CourseArgs::try_parse_from(bad).is_err(), "{bad:?}");
     }
 }
+
+/// `--course-choice` sets each of the handout's choices on the
+/// assignment's own, implies `--course-exact`, and names a wrong one.
+#[test]
+fn course_choices_set_the_solutions_choices() {
+    use crate::course::pixel::StopRule;
+    use crate::course::{Assignment, Choices};
+    let a = CourseArgs::try_parse_from([
+        "p",
+        "--course-choice",
+        "roulette-q=0.6",
+        "--course-choice",
+        "roulette-from=1",
+        "--course-choice",
+        "stop=staff",
+    ])
+    .unwrap();
+    assert!(a.course_exact(Assignment::PathTracer1).is_some());
+    assert_eq!(
+        a.course_choices(Assignment::PathTracer1),
+        Ok(Choices {
+            continue_probability: 0.6,
+            roulette_from: 1,
+            stop_rule: StopRule::StaffOneLate,
+        })
+    );
+    let plain = CourseArgs::try_parse_from(["p", "--course-exact"]).unwrap();
+    assert_eq!(
+        plain.course_choices(Assignment::PathTracer2),
+        Ok(Choices::of(Assignment::PathTracer2))
+    );
+    for (bad, says) in [
+        ("roulette-q=0", "(0, 1]"),
+        ("roulette-q=x", "(0, 1]"),
+        ("roulette-from=3", "1 or 2"),
+        ("stop=never", "handout or staff"),
+        ("speed=2", "the keys are"),
+        ("roulette-q", "KEY=VALUE"),
+    ] {
+        let a = CourseArgs::try_parse_from(["p", "--course-choice", bad]).unwrap();
+        let error = a.course_choices(Assignment::PathTracer1).unwrap_err();
+        assert!(error.contains(bad) && error.contains(says), "{error}");
+    }
+    assert!(
+        CourseArgs::try_parse_from(["p", "--course", "--course-choice", "stop=staff"]).is_err()
+    );
+}

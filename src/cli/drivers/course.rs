@@ -73,6 +73,7 @@ fn run(args: &CourseArgs, part: CoursePart, exact: CourseExact) -> Result<()> {
         },
         accumulate: part.direct_only || args.accumulate == 1,
         lamps: exact.lamps(),
+        choices: args.course_choices(exact.assignment)?,
         mistakes: args.mistake_set()?,
     };
     let adaptive = match args.adaptive_settings()? {
@@ -81,12 +82,15 @@ fn run(args: &CourseArgs, part: CoursePart, exact: CourseExact) -> Result<()> {
     };
     let mistakes: Vec<String> = tracer.mistakes.iter().map(|m| m.to_string()).collect();
     let course_line = format!(
-        "course-exact: assignment {}, {:?} direct light, -m {}, -o {}, adaptive {}, mistakes: {}",
+        "course-exact: assignment {}, {:?} direct light, -m {}, -o {}, adaptive {}, roulette {} from vertex {}, stop rule {:?}, mistakes: {}",
         exact.assignment.name(),
         tracer.direct,
         tracer.max_depth,
         u8::from(tracer.accumulate),
         adaptive.map_or("off".into(), |a| format!("{} {}", a.batch, a.tolerance)),
+        tracer.choices.continue_probability,
+        tracer.choices.roulette_from,
+        tracer.choices.stop_rule,
         if mistakes.is_empty() {
             "none".into()
         } else {
