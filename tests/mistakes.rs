@@ -59,8 +59,8 @@ fn direct_light_mistakes_scale_by_their_factor() {
 /// to 2 units away subtends a small solid angle: its pdf is several per
 /// steradian), `shadow-acne` darkens by about half (each shadow ray
 /// meets its own surface at `t` within rounding of 0 half the time), and
-/// `shadow-ray-reaches-light` leaves nothing (the lamp's mesh covers its
-/// light, so it blocks every shadow ray).
+/// `shadow-ray-reaches-light` leaves nothing (a shadow ray with no end
+/// meets the lamp's mesh or the closed box beyond the light).
 #[test]
 fn direct_light_mistakes_move_the_image_the_stated_way() {
     let b = CourseView::new();
@@ -91,7 +91,7 @@ fn direct_light_mistakes_move_the_image_the_stated_way() {
     eprintln!("shadow-ray-reaches-light: {wrong:?} against {right:?}");
     assert!(
         wrong.value <= 0.02 * right.value,
-        "shadow-ray-reaches-light: the lamp's mesh, which covers its light, blocks every sample"
+        "shadow-ray-reaches-light: the lamp's mesh and the box beyond the light block every sample"
     );
 }
 

@@ -204,7 +204,9 @@ pub fn placeholder(check: &Check, image: &[u8], shadings: &Shadings) -> Option<U
     if white + black == pixels.len() && white.min(black) * 100 >= pixels.len() {
         return Some(placeholder_one(check));
     }
-    if is_flat(image) {
+    // A wrong renderer can be black but for a few pixels (a shadow ray
+    // that every wall blocks, at -o 0): flat, but no placeholder's.
+    if is_flat(image) && !is_dark(image) {
         return Some(if check.lens.is_some() {
             THIN_LENS
         } else {
@@ -227,6 +229,16 @@ fn mean_difference(a: &[u8], b: &[u8]) -> f64 {
     }
     let sum: u64 = a.iter().zip(b).map(|(x, y)| x.abs_diff(*y) as u64).sum();
     sum as f64 / a.len() as f64
+}
+
+/// The mean, in display levels, below which an image is dark: black but
+/// for noise.
+const DARK_LEVEL: f64 = 2.0;
+
+/// Whether `image`'s mean value lies below [`DARK_LEVEL`].
+fn is_dark(image: &[u8]) -> bool {
+    let sum: u64 = image.iter().map(|&v| v as u64).sum();
+    (sum as f64) < DARK_LEVEL * image.len().max(1) as f64
 }
 
 /// Whether every 16 x 16 block's mean, per channel, lies within
@@ -279,5 +291,33 @@ pub fn part_6(check: &Check) -> Unwritten {
         function,
         file,
         shows: "its surfaces are black: the BSDF returns zero, as the starter does",
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::check::battery::battery_of;
+    use crate::course::Assignment;
+
+    fn image(value: impl Fn(usize) -> u8) -> Vec<u8> {
+        (0..3 * (SIZE.0 * SIZE.1) as usize).map(value).collect()
+    }
+
+    /// One flat colour is `generate_ray`'s placeholder (every pixel the
+    /// same ray); an image black but for a few lit pixels is flat too, but
+    /// a wrong renderer's, not a placeholder.
+    #[test]
+    fn a_flat_colour_is_generate_rays_and_a_dark_image_no_ones() {
+        let check = battery_of(Assignment::PathTracer1)[1];
+        let shadings = Shadings {
+            debug: image(|_| 7),
+            normal: image(|_| 9),
+        };
+        let grey = image(|_| 80);
+        assert_eq!(placeholder(&check, &grey, &shadings), Some(GENERATE_RAY));
+        let nearly_black = image(|k| if k % 997 == 0 { 200 } else { 0 });
+        assert!(is_flat(&nearly_black));
+        assert_eq!(placeholder(&check, &nearly_black, &shadings), None);
     }
 }

@@ -88,7 +88,7 @@ impl Mistake {
                 "shadow-ray-reaches-light",
                 3,
                 "estimate_direct_lighting_importance",
-                "the shadow ray's max_t is not shortened before the light, so the lamp's own mesh blocks it",
+                "the shadow ray's max_t is left at its default, infinity, not shortened before the light: the lamp's own mesh or the ceiling beyond it blocks it",
                 "no direct light from the lamp: the room is black but for the lamp",
             ),
             Mistake::LightFromBehind => (

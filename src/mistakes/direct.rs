@@ -19,14 +19,15 @@ pub fn shadow_ray_without_offset(hit: &Hit, sample: &LightSample) -> Ray {
 }
 
 /// [`super::Mistake::ShadowRayReachesLight`]: the shadow ray (offset
-/// correctly) runs on to the light sample itself and a little past it (the
-/// starter's `max_t = dist` with the hit test's `t <= max_t`, with room for
-/// rounding), so a lamp mesh on the light blocks it.
+/// correctly) keeps the starter's default `max_t`, infinity, so whatever
+/// lies on its line beyond the light sample blocks it: the lamp's own
+/// mesh, the ceiling, the box's walls. In a closed room no light sample
+/// is seen. (A student's C++ solution with this mistake renders the
+/// course's `CBbunny.dae` black but for the lamp, as this does.)
 pub fn shadow_ray_to_the_light(hit: &Hit, sample: &LightSample) -> Ray {
-    let ray = hit.spawn_ray(sample.wi);
     Ray {
-        t_max: sample.distance * (1.0 + 1e-3),
-        ..ray
+        t_max: f32::INFINITY,
+        ..hit.spawn_ray(sample.wi)
     }
 }
 
