@@ -6,7 +6,8 @@
 use crate::intersect::{Hit, Ray};
 use glam::{Vec2, Vec3};
 
-use crate::lights::{LightSample, RectLight};
+use crate::lights::{Light, LightSample, RectLight};
+use crate::math::Rgb;
 
 /// [`super::Mistake::ShadowAcne`]: the shadow ray starts at the hit point
 /// itself with `min_t = 0`, so the surface it leaves, met again at `t`
@@ -28,6 +29,20 @@ pub fn shadow_ray_to_the_light(hit: &Hit, sample: &LightSample) -> Ray {
     Ray {
         t_max: f32::INFINITY,
         ..hit.spawn_ray(sample.wi)
+    }
+}
+
+/// [`super::Mistake::NoPdf`]'s light: the radiance the starter's
+/// `sample_L` returns, which a solution that never divides by the pdf
+/// sees alone. The starter's area light puts its distance quirk in the
+/// pdf (`r / (A cos_l)` for `r^2 / (A cos_l)`), where
+/// [`crate::lights::LightConvention::Course`] puts it in the radiance
+/// (`r L`): the same `L / pdf`, but not the same `L`. Point lights and
+/// maps are alike in both.
+pub fn starter_radiance(light: &Light, sample: &LightSample) -> Rgb {
+    match light {
+        Light::Rect(rect) => sample.radiance / rect.convention.area_factor(sample.distance),
+        _ => sample.radiance,
     }
 }
 

@@ -31,7 +31,9 @@ pub mod environment;
 pub mod intersect;
 pub mod materials;
 
-pub use direct::{shadow_ray_to_the_light, shadow_ray_without_offset, two_sided_rect_sample};
+pub use direct::{
+    shadow_ray_to_the_light, shadow_ray_without_offset, starter_radiance, two_sided_rect_sample,
+};
 pub use intersect::StudentBvh;
 
 use std::fmt;

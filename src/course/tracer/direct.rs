@@ -100,7 +100,12 @@ impl StarterTracer {
                     LightPdf::SolidAngle(pdf) => pdf,
                 };
                 let f = self.f(&point.bsdf, point.wo, wi);
-                sum += self.over_pdf(f * sample.radiance * self.cos_theta(wi), pdf);
+                let radiance = if self.mistakes.has(Mistake::NoPdf) {
+                    mistakes::starter_radiance(light, &sample)
+                } else {
+                    sample.radiance
+                };
+                sum += self.over_pdf(f * radiance * self.cos_theta(wi), pdf);
             }
             total += if self.mistakes.has(Mistake::LightSamplesNotAveraged) {
                 sum
