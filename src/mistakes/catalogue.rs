@@ -33,7 +33,7 @@ impl Mistake {
                 1,
                 "Triangle::intersect / has_intersection",
                 "the range test written `r.min_t <= t <= r.max_t`, which C++ reads as `(r.min_t <= t) <= r.max_t`: any t passes while max_t >= 1",
-                "a black image: every shadow ray is blocked by something on its line, and the camera sees whichever surface the tree gives it last",
+                "a dark image: a shadow ray of length 1 or more is blocked by anything on its line, behind it too, and the camera sees whichever surface the tree gives it last (how dark, and which surfaces, depend on your tree: a C++ solution kept the walls near the lamp lit)",
             ),
             Mistake::SphereFarRoot => (
                 "sphere-far-root",
