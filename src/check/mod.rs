@@ -32,6 +32,7 @@
 //!   ([`crate::scene::export_scene`]) into the output folder.
 
 pub mod battery;
+mod means;
 pub mod outcome;
 pub mod patterns;
 pub mod rates;

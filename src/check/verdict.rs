@@ -6,6 +6,7 @@
 //! ([`super::variants`]): then it passes, and the outcome says which.
 
 use super::battery::{Check, Render, Stage, SIZE};
+use super::means::{block_ratios, mean_fractions, mean_image};
 use super::patterns;
 use super::rates;
 use super::scan::{scan, Scan, WINDOW};
@@ -15,7 +16,6 @@ use super::unwritten;
 use super::variants;
 use super::words::{describe, differing_blocks};
 use crate::course::Assignment;
-use crate::math::{luminance, Rgb};
 use crate::mistakes::Mistakes;
 
 pub use super::outcome::{CheckImages, CheckResult, Outcome, RateImages, Suspect, SHOWN_SUSPECTS};
@@ -275,14 +275,7 @@ pub fn judge(
                 stage.render_chosen(check, variant.choices, Mistakes::NONE, 4000 + seed, threads)
             })
             .collect();
-        let judged: Vec<Decided> = planes
-            .iter()
-            .zip(&models)
-            .map(|(p, m)| {
-                let model = p.model(&renders).widened(m);
-                Decided::new(&p.cells(&written), &model, alpha, p.channels())
-            })
-            .collect();
+        let judged = held_to(&renders, planes, &models, &decided, alpha);
         if judged.iter().all(Decided::passes) {
             return CheckResult {
                 images: Some(images),
@@ -314,19 +307,14 @@ pub fn judge(
             let renders: Vec<Render> = (0..SUSPECT_RENDERS as u64)
                 .map(|seed| stage.render(check, Mistakes::of(&[mistake]), 2000 + seed, threads))
                 .collect();
-            let (mut sum, mut fits) = (0.0, true);
-            for ((plane, model), d) in planes.iter().zip(&models).zip(&decided) {
-                // Held to the mistake's images by both tests, as the
-                // student's image was to the course's.
-                let wrong = plane.model(&renders).widened(model);
-                let judged = Decided::new(&d.x, &wrong, alpha, plane.channels());
-                sum += judged.statistic;
-                fits &= judged.passes();
-            }
+            // Held to the mistake's images by both tests, as the
+            // student's image was to the course's.
+            let judged = held_to(&renders, planes, &models, &decided, alpha);
+            let sum: f64 = judged.iter().map(|d| d.statistic).sum();
             let suspect = Suspect {
                 mistake,
                 misfit: sum / cells as f64,
-                fits,
+                fits: judged.iter().all(Decided::passes),
             };
             let image = renders.into_iter().next().map(|r| r.image);
             (suspect, image.unwrap_or_default())
@@ -355,12 +343,24 @@ pub fn judge(
     }
 }
 
-/// Per pixel, the mean fraction of samples over `renders`' rate images.
-fn mean_fractions(renders: &[Render]) -> Vec<f64> {
-    let all: Vec<&Vec<f64>> = renders.iter().filter_map(|r| r.rates.as_ref()).collect();
-    let n = all.len().max(1) as f64;
-    (0..all.first().map_or(0, |f| f.len()))
-        .map(|i| all.iter().map(|f| f[i]).sum::<f64>() / n)
+/// The student's cells of each plane (in `decided`) held to `renders`
+/// (another correct solution's, or a mistake's) by both tests, each
+/// plane's noise the larger of theirs and the course's (`models`).
+fn held_to(
+    renders: &[Render],
+    planes: &[Plane],
+    models: &[NullModel],
+    decided: &[Decided],
+    alpha: f64,
+) -> Vec<Decided> {
+    planes
+        .iter()
+        .zip(models)
+        .zip(decided)
+        .map(|((plane, model), d)| {
+            let other = plane.model(renders).widened(model);
+            Decided::new(&d.x, &other, alpha, plane.channels())
+        })
         .collect()
 }
 
@@ -402,24 +402,4 @@ fn describe_planes(decided: &[Decided], models: &[NullModel], spp: u32) -> Strin
         parts.insert(0, "the image is within the noise".into());
     }
     parts.join("; ")
-}
-
-/// The per-value mean of 8-bit images.
-fn mean_image(images: &[Vec<u8>]) -> Vec<u8> {
-    let n = images.len().max(1) as f64;
-    (0..images.first().map_or(0, Vec::len))
-        .map(|i| (images.iter().map(|im| im[i] as f64).sum::<f64>() / n).round() as u8)
-        .collect()
-}
-
-/// Per block, the luminance ratio of cells `x` over `mean`, in radiance.
-fn block_ratios(x: &[f64], mean: &[f64]) -> Vec<f64> {
-    let lum = |c: &[f64]| luminance(Rgb::new(c[0] as f32, c[1] as f32, c[2] as f32)) as f64;
-    x.chunks(3)
-        .zip(mean.chunks(3))
-        .map(|(a, b)| match (lum(a), lum(b)) {
-            (a, b) if a <= 0.0 && b <= 0.0 => 1.0,
-            (a, b) => (a / b).powf(2.2),
-        })
-        .collect()
 }

@@ -183,9 +183,9 @@ impl CourseArgs {
                         }),
                         _ => Err(wrong("the probability must be a number in (0, 1]")),
                     },
-                    "roulette-from" => match value {
-                        "1" | "2" => Ok(Choices {
-                            roulette_from: if value == "1" { 1 } else { 2 },
+                    "roulette-from" => match value.parse::<u32>() {
+                        Ok(from @ 1..=2) => Ok(Choices {
+                            roulette_from: from,
                             ..choices
                         }),
                         _ => Err(wrong("the vertex must be 1 or 2")),
