@@ -13,10 +13,12 @@ mod common;
 
 use common::*;
 use glam::Vec3;
+use pathtracer::intersect::{Hit, Ray};
 use pathtracer::math::luminance;
 use pathtracer::mistakes::Mistake;
 use pathtracer::render::Rendered;
 use pathtracer::scene::builtin::{self, BALL_CENTRES, BALL_RADIUS};
+use pathtracer::scene::Light;
 
 use pathtracer::course::StarterDirect::Importance as L;
 
@@ -192,21 +194,62 @@ fn a_chained_comparison_blacks_out_the_image() {
     assert!(right.value > 0.0 && wrong.value < 0.05 * right.value);
 }
 
-/// `sphere-far-root`: the balls turn black (the camera sees their far
-/// side from inside, facing away from the lamp), while the walls, whose
-/// shadow rays only ask whether a ball is in the way, stay bit for bit.
+/// `sphere-far-root`: the camera sees each ball's far side, and the
+/// course shades it by its own outward normal (`make_coord_space(o2w,
+/// isect.n)`, never turned to the viewer), so it is lit from behind: where
+/// the far side faces up, towards the lamp, the ball is lit; where it faces
+/// down it is black. The walls, whose shadow rays only ask whether a ball is
+/// in the way, stay bit for bit.
 #[test]
-fn the_far_root_blacks_out_the_balls_only() {
+fn the_far_root_shows_the_balls_lit_from_behind() {
     let view = CourseView::new().on_student_bvh();
     let (right, wrong) = both(&view, Mistake::SphereFarRoot, 16, 1130, false);
-    let balls = view.pixels_seeing(on_a_ball);
-    let mean = |image: &Rendered| balls.iter().map(|&i| pixel(image, i).0).sum::<f64>();
+    let Light::Area {
+        center,
+        dim_x,
+        dim_y,
+        ..
+    } = builtin::cornell_box().lights[0]
+    else {
+        panic!("the built-in box's light is an area light");
+    };
+    let corners = [(-0.5, -0.5), (0.5, -0.5), (-0.5, 0.5), (0.5, 0.5)]
+        .map(|(s, t)| center + s * dim_x + t * dim_y);
+    // Where the camera ray leaves the ball it met, and the sign of the
+    // lamp's corners seen from there against its outward normal: all of
+    // the (convex) lamp above the far side's tangent plane, or all below.
+    let lamp_side = |ray: &Ray, hit: &Hit| {
+        let centre = *BALL_CENTRES
+            .iter()
+            .min_by(|a, b| a.distance(hit.p).total_cmp(&b.distance(hit.p)))
+            .unwrap();
+        let far = hit.p + 2.0 * (centre - hit.p).dot(ray.dir) * ray.dir;
+        let n = (far - centre) / BALL_RADIUS;
+        let heights = corners.map(|c| n.dot(c - far));
+        if heights.iter().all(|&h| h > 0.0) {
+            1
+        } else if heights.iter().all(|&h| h < 0.0) {
+            -1
+        } else {
+            0
+        }
+    };
+    let on_ball_with_lamp =
+        |side| move |ray: &Ray, hit: &Hit| on_a_ball(hit.p) && lamp_side(ray, hit) == side;
+    let facing = view.pixels_where(on_ball_with_lamp(1));
+    let turned_away = view.pixels_where(on_ball_with_lamp(-1));
+    let sum = |image: &Rendered, pixels: &[usize]| -> f64 {
+        pixels.iter().map(|&i| pixel(image, i).0).sum()
+    };
+    let (lit, lit_right) = (sum(&wrong, &facing), sum(&right, &facing));
     eprintln!(
-        "balls: right {:.3}, wrong {:.3}",
-        mean(&right),
-        mean(&wrong)
+        "{} pixels see a far side facing the lamp (wrong {lit:.3}, right {lit_right:.3}), {} one turned away",
+        facing.len(),
+        turned_away.len()
     );
-    assert!(mean(&wrong) < 0.1 * mean(&right));
+    assert!(facing.len() >= 20 && turned_away.len() >= 20);
+    assert_eq!(sum(&wrong, &turned_away), 0.0);
+    assert!(lit > 0.25 * lit_right);
     let walls = view.pixels_seeing(on_a_side_wall);
     assert_same("sphere-far-root, walls", &wrong, &right, &walls);
 }

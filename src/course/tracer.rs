@@ -43,7 +43,7 @@ use super::Choices;
 use crate::intersect::{Hit, Intersector, Ray};
 use crate::lights::Light;
 use crate::materials::{Bsdf, BsdfSample};
-use crate::math::Rgb;
+use crate::math::{Frame, Rgb};
 use crate::mistakes::{self, Mistake, Mistakes};
 use crate::sampling::Sampler;
 use crate::world::{ShadingPoint, World};
@@ -78,8 +78,11 @@ pub enum Lamps {
     MeshFaces,
     /// Assignment 3-2: the starter turns each area light into two
     /// triangles of its own that emit `radiance / area * max(0, n . wo)`,
-    /// and the lamp mesh that stands in for it emits nothing
-    /// (`../shared/cs184-format.md`, section 8.1).
+    /// and the lamp mesh that stands in for it emits nothing (the 3-2
+    /// starter's `AreaLight` constructor and its loader's
+    /// `EmissionBSDF(radiance, 0)`; measured on the 3-2 starter, whose
+    /// camera sees the quad, 0.8 x 0.6 in the course's boxes, where the
+    /// lamp mesh is 0.6 x 0.8).
     LightQuads,
 }
 
@@ -120,7 +123,25 @@ impl StarterTracer {
 
     /// `bsdf->f(wo, wi)`.
     fn f(&self, bsdf: &Bsdf, wo: Vec3, wi: Vec3) -> Rgb {
-        bsdf.f(wo, wi) * self.f_factor(bsdf, wo, wi)
+        bsdf.f(starter_wo(bsdf, wo), wi) * self.f_factor(bsdf, wo, wi)
+    }
+
+    /// The hit as the starter shades it: `make_coord_space(o2w, isect.n)`,
+    /// the frame's +Z the surface's own normal, never turned towards the
+    /// viewer. A diffuse or rough surface seen from behind (`wo.z < 0`) is
+    /// lit from its other side, through itself: the hemisphere sampler,
+    /// `sample_f` and the test `wi.z < 0` all read +Z. A mirror or glass
+    /// keeps the project's frame, turned to the viewer: its directions in
+    /// the world are the same either way (reflection is symmetric in the
+    /// normal's sign, and glass knows which side it is on from the
+    /// geometric normal, as the starter's does from `wo.z`).
+    fn shade<I: Intersector>(&self, world: &World<I>, hit: Hit, wo: Vec3) -> ShadingPoint {
+        let mut point = world.shade_surface(hit, wo);
+        if !point.bsdf.is_delta() && hit.n.dot(wo) < 0.0 {
+            point.frame = Frame::from_z(hit.n);
+            point.wo = point.frame.to_local(wo);
+        }
+        point
     }
 
     /// What a student's `f(wo, wi)` is times the right one: `pi` for a
@@ -262,7 +283,7 @@ impl StarterTracer {
         k: u32,
         sampler: &mut impl Sampler,
     ) -> Rgb {
-        let point = world.shade_surface(hit, -ray.dir);
+        let point = self.shade(world, hit, -ray.dir);
         if point.bsdf.is_black() {
             return Rgb::ZERO;
         }
@@ -280,7 +301,7 @@ impl StarterTracer {
         }
         let (uc, u) = (sampler.get_1d(), sampler.get_2d());
         let sample = mistakes::materials::sample_specular(&point.bsdf, point.wo, uc, self.mistakes)
-            .unwrap_or_else(|| point.bsdf.sample(point.wo, uc, u));
+            .unwrap_or_else(|| point.bsdf.sample(starter_wo(&point.bsdf, point.wo), uc, u));
         let Some(sample) = sample else {
             return l;
         };
@@ -303,5 +324,16 @@ impl StarterTracer {
             q
         };
         l + self.bounce_weight(&point.bsdf, point.wo, &sample) * incoming / q_divided
+    }
+}
+
+/// `wo` as the starter's BSDF reads it: `DiffuseBSDF`'s `f` and `sample_f`
+/// ignore `wo`, so a diffuse surface seen from behind reflects as from the
+/// front (the project's [`crate::materials::Diffuse`] wants `wo.z > 0`);
+/// a rough conductor's `f` is 0 below its surface, as the project's.
+fn starter_wo(bsdf: &Bsdf, wo: Vec3) -> Vec3 {
+    match bsdf {
+        Bsdf::Diffuse(_) => Vec3::new(wo.x, wo.y, wo.z.abs()),
+        _ => wo,
     }
 }

@@ -40,7 +40,7 @@ impl Mistake {
                 1,
                 "Sphere::intersect",
                 "the larger root t2 is taken when the nearer t1 is valid",
-                "spheres black: the camera sees their far side from inside, which faces away from the lamp",
+                "the balls lit from behind: the camera sees each ball's far side, which the course shades by its own outward normal (`make_coord_space(o2w, isect.n)` turns nothing to the viewer), so a ball glows at its top, where the far side faces the lamp, and is black below",
             ),
             Mistake::BarycentricsPermuted => (
                 "barycentric-normals-permuted",

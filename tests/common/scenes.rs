@@ -144,15 +144,16 @@ impl SceneBuilder {
         self
     }
 
-    /// The square floor `y = 0`, `|x|, |z| <= half`.
+    /// The square floor `y = 0`, `|x|, |z| <= half`, wound so that its
+    /// normal points up (the course shades a surface by its own normal).
     pub fn floor(&mut self, material: MaterialId, half: f32) -> &mut Self {
         self.quad(
             material,
             [
                 Vec3::new(-half, 0.0, -half),
-                Vec3::new(half, 0.0, -half),
-                Vec3::new(half, 0.0, half),
                 Vec3::new(-half, 0.0, half),
+                Vec3::new(half, 0.0, half),
+                Vec3::new(half, 0.0, -half),
             ],
         )
     }

@@ -93,6 +93,15 @@ impl CourseView {
     /// The pixels whose centre and four corners all see a point for which
     /// `keep` holds (so that no sample of the pixel sees anything else).
     pub fn pixels_seeing(&self, keep: impl Fn(glam::Vec3) -> bool) -> Vec<usize> {
+        self.pixels_where(|_, hit| keep(hit.p))
+    }
+
+    /// The pixels whose centre and four corners all send a camera ray that
+    /// meets the scene at a hit for which `keep(ray, hit)` holds.
+    pub fn pixels_where(
+        &self,
+        keep: impl Fn(&pathtracer::intersect::Ray, &pathtracer::intersect::Hit) -> bool,
+    ) -> Vec<usize> {
         let primitives = Primitives::from_scene(&self.scene);
         let linear = pathtracer::intersect::LinearScan::new(&primitives);
         let points = [(0.5, 0.5), (0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0)];
@@ -107,7 +116,7 @@ impl CourseView {
                         at,
                         at,
                     );
-                    linear.intersect(&ray).is_some_and(|hit| keep(hit.p))
+                    linear.intersect(&ray).is_some_and(|hit| keep(&ray, &hit))
                 })
             })
             .map(|i| i as usize)
