@@ -185,8 +185,9 @@ fn the_courses_hemisphere_estimator_sees_the_lamp_mesh() {
 }
 
 /// Assignment 3-2's lamps: the camera sees each area light as its own quad
-/// emitting `L / A max(0, n . wo)`, and the lamp mesh emits nothing
-/// (`../shared/cs184-format.md`, 8.1); 3-1's camera sees the mesh.
+/// emitting `L / A max(0, n . wo)`, and the lamp mesh emits nothing (the
+/// 3-2 starter's `AreaLight` constructor, measured on the built starter);
+/// 3-1's camera sees the mesh.
 #[test]
 fn the_3_2_lamps_are_the_lights_own_quads() {
     let (scene, light, _) = floor_under_a_turned_lamp(true);

@@ -171,7 +171,7 @@ fn run() -> Result<()> {
             doc,
             "### `{}`\n\n**Look at** `{}`. **Wrong:** {}. **Shows:** {}.\n\n\
              ![{} beside the course's image](images/{name})\n\n\
-             Image mean (the lamp included), mistaken over correct: {:.3}. {}\n",
+             Means, mistaken over correct: {:.3}. {}\n",
             info.name,
             info.function,
             info.what,
@@ -204,32 +204,23 @@ catalogue (src/mistakes/catalogue.rs) or the example, not this file. -->
 
 Each section shows one mistake of the catalogue (`--mistake list`): the
 image a correct course solution renders (`--course-exact`, left), the
-image with the mistake (middle), and the ratio of the two (right: 4 x 4
-pixel blocks, blue where the mistake darkens, red where it brightens, grey
-where both are black; the bar along the bottom runs from a quarter to four
-times). It names the starter function to look at, what is wrong in it,
-and what to look for. Every mistake renders with any lighting binary
-(`--mistake NAME`, repeatable) and is tested for its symptom
+image with the mistake (middle) and their ratio (right, 4 x 4 pixel
+blocks: blue where the mistake darkens, red where it brightens, grey where
+both are black; the bar runs from a quarter to four times). It names the
+starter function to look at, what is wrong in it and what to look for,
+then the ratio of the two images' means (the lamp included) and a command
+that renders the mistake at 480 x 360 with a binary.
+
+The pictures are this project's built-in scenes, framed as the course
+frames 480 x 360 and rendered at 320 x 240 by the course's renderer with
+independent random numbers, noisy as a student's are
+(`cargo run --release --example symptoms`). Each symptom is tested
 (`tests/mistakes_1_2.rs`, `tests/mistakes.rs`, `tests/mistakes_3_2.rs`).
 
-Made by one command, on this project's built-in scenes, framed as the
-course frames 480 x 360 and rendered at 320 x 240 by the course's renderer
-(the command under each picture renders it at 480 x 360 with a binary):
-
-```sh
-cargo run --release --example symptoms
-```
-
-The renders are noisy the way a student's are: independent random
-numbers, the course's light sampling, no multiple importance sampling.
-What a mistake changes is what the ratio shows, beyond that noise.
-
-Two mistakes often named are not here, because they do not show in a
-course image. The light's cosine cannot be left out: the starter's
-`AreaLight::sample_L` puts it in the pdf it returns, and the student's
-estimator never sees it. A ray direction left unnormalised changes
-nothing a 3-1 image shows: the triangle's and the box's `t` scale with
-`|d|` while the hit point `o + t d` does not, so only the clipping
-distances move (by at most 1.2, the film's corners), and the spheres'
-test, `a = d . d`, is exact for any length.
+Two mistakes often named do not show in a course image. The light's
+cosine cannot be left out: the starter's `AreaLight::sample_L` puts it in
+the pdf it returns. A ray direction left unnormalised changes no 3-1
+image: the triangle's and the box's `t` scale with `|d|` while the hit
+point `o + t d` does not, so only the clipping distances move, and the
+spheres' test, `a = d . d`, is exact for any length.
 ";

@@ -1,8 +1,9 @@
 //! Part 7's environment map: a small latitude-longitude sky of the
 //! project's own, written as an OpenEXR file the course's loader reads.
 //!
-//! The course's loader (section 8.1 of `../shared/cs184-format.md`)
-//! refuses tiled files and takes the file's channels 2, 1 and 0 as red,
+//! The course's loader (the starter's `load_exr` in
+//! `src/application/main.cpp`, with its bundled `tinyexr.h`) refuses tiled
+//! files and takes the file's channels 2, 1 and 0 as red,
 //! green and blue. OpenEXR stores channels sorted by name, so an RGB file
 //! holds `B, G, R` and loads right, while an RGBA file (`A, B, G, R`)
 //! loads with its colours shifted. [`write_exr`] therefore writes three

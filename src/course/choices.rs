@@ -6,8 +6,8 @@
 //!   second. A path that continues divides by `q`, so the expected
 //!   radiance is the same for every `q`: `E[L'] = q (L / q) + (1 - q) 0 = L`.
 //!   The noise is not, and in an 8-bit PNG, where `floor(255 v)` clips at
-//!   255, more noise lowers the mean (section "Legitimate variety" of
-//!   docs/maintainers/checker.md).
+//!   255, more noise lowers the mean (docs/maintainers/checker.md,
+//!   "Legitimate variants: the null holds them").
 //! - **When an adaptive pixel tests convergence**: after every
 //!   `samplesPerBatch` samples (the handout's loop), or one sample later
 //!   as the staff's own library does ([`StopRule::StaffOneLate`]).

@@ -35,7 +35,8 @@
 //! `unsafe` (but for the hints of [`crate::math::prefetch`] and
 //! [`crate::math::huge_pages`]), and the same binary runs on any x86-64.
 //!
-//! Measured against the binary BVH and Embree in `docs/03-bvh.md`.
+//! Measured against the binary BVH and Embree in
+//! `docs/maintainers/wide-bvh.md` and `docs/10-performance.md`.
 
 pub mod accel;
 #[cfg(target_arch = "x86_64")]
