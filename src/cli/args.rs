@@ -224,9 +224,10 @@ pub struct CourseArgs {
     #[arg(long, value_enum, value_name = "SAMPLER", default_value_t = SamplerArg::Zsobol)]
     pub sampler: SamplerArg,
 
-    /// Russian roulette: continue with probability 0.65 after the first
-    /// indirect bounce (`fixed`, the course's) or with probability
-    /// min(1, path throughput) (`throughput`, the default).
+    /// Russian roulette: continue with probability 0.65 from the second
+    /// vertex on (`fixed`, the course's), or after 8 bounces with
+    /// probability min(1, the path's throughput times the refractions'
+    /// eta scale) (`throughput`, the default; docs/05-global.md).
     #[arg(long, value_enum, value_name = "RULE", default_value_t = RouletteArg::Throughput)]
     pub roulette: RouletteArg,
 

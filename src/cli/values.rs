@@ -262,9 +262,9 @@ impl From<SamplerArg> for SamplerKind {
 /// `--roulette`: the command line's names of the [`Roulette`] rules.
 #[derive(clap::ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum RouletteArg {
-    /// Continue with probability 0.65 after the first indirect bounce (the course's).
+    /// Continue with probability 0.65 from the second vertex on (the course's).
     Fixed,
-    /// Continue with probability min(1, path throughput) (pbrt-v4's, the default).
+    /// After 8 bounces, continue with probability min(1, the path's throughput times the refractions' eta scale) (pbrt-v4's rule, the default).
     #[default]
     Throughput,
 }

@@ -10,8 +10,8 @@
 //! - [`Roulette::Fixed`], the course's: `q = 0.65` ([`CONTINUE_PROBABILITY`])
 //!   whatever the path carries, from the second scattering vertex on (never
 //!   on the first indirect bounce).
-//! - [`Roulette::Throughput`], pbrt-v4's rule (section 13.1.6) applied after
-//!   [`THROUGHPUT_ROULETTE_AFTER`] bounces (8; Mitsuba 3's path tracer
+//! - [`Roulette::Throughput`], pbrt-v4's rule (its PathIntegrator, section
+//!   13.4) applied after [`THROUGHPUT_ROULETTE_AFTER`] bounces (8; Mitsuba 3's path tracer
 //!   starts after 5, `rr_depth`): `q` follows what the path can still bring,
 //!
 //!   ```text

@@ -200,7 +200,7 @@ impl Mistake {
                 "no-eta-squared",
                 6,
                 "GlassBSDF::sample_f, RefractionBSDF::sample_f",
-                "the transmitted radiance is not divided by eta^2",
+                "the transmitted radiance is not divided by eta^2 as the handout asks (its eta = 1 / ior entering, ior leaving)",
                 "nothing on a closed glass object seen from outside (the factors entering and leaving cancel); a single refracting surface is eta^2 too bright or too dark",
             ),
             Mistake::NoTotalInternalReflection => (
