@@ -22,10 +22,10 @@
 //!   the report shows;
 //! - [`report`]: `report.html`, one self-contained page;
 //! - [`scenes`]: the scenes the checks render: the course's
-//!   `CBspheres_lambertian.dae`, `CBbunny.dae` (part 2) and
-//!   `CBspheres_microfacet_al_ag.dae` (part 6's rough metal) where found
-//!   (`--scenes DIR`, else `CS184_SCENES`), else the project's own Cornell
-//!   box, with balls of triangles, with copper balls; for part 6's mirror
+//!   `CBspheres_lambertian.dae` and `CBspheres_microfacet_al_ag.dae`
+//!   (part 6's rough metal) where found (`--scenes DIR`, else
+//!   `CS184_SCENES`), else the project's own Cornell box, with copper
+//!   balls; for part 2 the box with balls of triangles; for part 6's mirror
 //!   and glass a box of the project's, for part 7 balls on a floor under a
 //!   sky of the project's ([`sky`], an OpenEXR map the course's loader
 //!   reads); each written in the course's dialect
@@ -80,7 +80,10 @@ pub fn table(results: &[CheckResult]) -> String {
     );
     for r in results {
         let (mistake, function) = match (&r.outcome, r.outcome.likely_mistake()) {
-            (_, Some(m)) => (m.to_string(), m.info().function.to_string()),
+            (_, Some(m)) => (
+                r.outcome.likely_mistake_named().unwrap_or_default(),
+                m.info().function.to_string(),
+            ),
             (Outcome::Fail { .. }, None) => (
                 "none known fits".into(),
                 format!("{} ({})", r.check.function, r.check.file),

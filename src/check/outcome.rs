@@ -86,6 +86,22 @@ impl Outcome {
             _ => None,
         }
     }
+
+    /// The best mistake that fits, as the summary names it: with `(+N)`
+    /// when N others fit too (a check cannot tell them apart; a later
+    /// check, or the report's list, may).
+    pub fn likely_mistake_named(&self) -> Option<String> {
+        let best = self.likely_mistake()?;
+        let fitting = match self {
+            Outcome::Fail { suspects, .. } => suspects.iter().filter(|s| s.fits).count(),
+            _ => 0,
+        };
+        Some(if fitting > 1 {
+            format!("{best} (+{})", fitting - 1)
+        } else {
+            best.to_string()
+        })
+    }
 }
 
 /// The 8-bit images of a check (three bytes a pixel, [`super::battery::SIZE`]).
@@ -122,3 +138,47 @@ pub struct RateImages {
 
 /// How many suspects the report shows.
 pub const SHOWN_SUSPECTS: usize = 3;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn failed(fits: &[(Mistake, bool)]) -> Outcome {
+        Outcome::Fail {
+            statistic: 3.0,
+            threshold: 2.0,
+            region: 0.0,
+            region_threshold: 1.0,
+            what: String::new(),
+            suspects: fits
+                .iter()
+                .map(|&(mistake, fits)| Suspect {
+                    mistake,
+                    misfit: if fits { 0.1 } else { 3.0 },
+                    fits,
+                })
+                .collect(),
+        }
+    }
+
+    #[test]
+    fn the_summary_says_how_many_others_fit_as_well() {
+        use Mistake::*;
+        let tie = failed(&[
+            (TriangleChainedComparison, true),
+            (MaxTNotShrunk, true),
+            (NoPdf, false),
+        ]);
+        assert_eq!(tie.likely_mistake(), Some(TriangleChainedComparison));
+        assert_eq!(
+            tie.likely_mistake_named().as_deref(),
+            Some("triangle-chained-comparison (+1)")
+        );
+        let one = failed(&[(MaxTNotShrunk, true), (NoPdf, false)]);
+        assert_eq!(
+            one.likely_mistake_named().as_deref(),
+            Some("max-t-not-shrunk")
+        );
+        assert_eq!(failed(&[(NoPdf, false)]).likely_mistake_named(), None);
+    }
+}

@@ -266,7 +266,7 @@ table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:0.2em 0.5em}<
     );
     for (i, r) in results.iter().enumerate() {
         let likely = match (&r.outcome, r.outcome.likely_mistake()) {
-            (_, Some(m)) => m.to_string(),
+            (_, Some(_)) => r.outcome.likely_mistake_named().unwrap_or_default(),
             (Outcome::Fail { .. }, None) => "none known fits".to_string(),
             (Outcome::NotWritten(u), None) => format!("not written yet: {}", escape(u.function)),
             _ => String::new(),

@@ -94,8 +94,9 @@ fn the_microfacet_and_mesh_boxes_survive_the_course_format() {
 }
 
 /// `--scenes` is searched with its subfolders (the course's `dae/` keeps
-/// `CBbunny.dae` in `sky/`); a scene not found there is replaced by the
-/// project's stand-in with a warning that names the missing file.
+/// its scenes in folders such as `sky/`); a scene not found there is
+/// replaced by the project's stand-in with a warning that names the
+/// missing file.
 #[test]
 fn course_scenes_are_found_in_subfolders_and_a_stand_in_is_said() {
     let dir = tempfile::tempdir().unwrap();
@@ -103,19 +104,20 @@ fn course_scenes_are_found_in_subfolders_and_a_stand_in_is_said() {
     std::fs::create_dir_all(dae.join("sky")).unwrap();
     let mut text = Vec::new();
     export_scene::write_scene_dae(&builtin::cornell_box(), &mut text).unwrap();
-    std::fs::write(dae.join("sky").join(COURSE_MESH_SCENE), &text).unwrap();
+    std::fs::write(dae.join("sky").join(COURSE_SCENE), &text).unwrap();
     let out = dir.path().join("out");
-    let found = CheckScene::Mesh.file(Some(&dae), &out).unwrap();
-    assert_eq!(found.path, dae.join("sky").join(COURSE_MESH_SCENE));
+    let found = CheckScene::Lambertian.file(Some(&dae), &out).unwrap();
+    assert_eq!(found.path, dae.join("sky").join(COURSE_SCENE));
     assert_eq!(found.warning, None);
-    let stand_in = CheckScene::Lambertian.file(Some(&dae), &out).unwrap();
-    assert_eq!(stand_in.path, out.join("scenes").join("cornell-box.dae"));
+    let stand_in = CheckScene::Microfacet.file(Some(&dae), &out).unwrap();
+    assert_eq!(stand_in.path, out.join("scenes").join("microfacet-box.dae"));
     let warning = stand_in.warning.unwrap();
     assert!(
-        warning.contains(COURSE_SCENE) && warning.contains("stand-in"),
+        warning.contains(COURSE_MICROFACET_SCENE) && warning.contains("stand-in"),
         "{warning}"
     );
     // The project's own scenes stand in for no course file: no warning.
-    let own = CheckScene::Specular.file(Some(&dae), &out).unwrap();
-    assert_eq!(own.warning, None);
+    for own in [CheckScene::Specular, CheckScene::Mesh] {
+        assert_eq!(own.file(Some(&dae), &out).unwrap().warning, None);
+    }
 }
