@@ -105,7 +105,8 @@ pub struct StarterTracer {
 }
 
 impl StarterTracer {
-    /// Whether light that has bounced at vertex `k` is part of the image.
+    /// Whether light that has bounced at vertex `k` is part of the image
+    /// (`k = 0`: what the camera ray meets emits).
     fn counts(&self, k: u32) -> bool {
         self.accumulate
             || k == self.max_depth()
@@ -202,7 +203,7 @@ impl StarterTracer {
             return self.escaped_radiance(world, ray);
         };
         let mut l = Rgb::ZERO;
-        if self.accumulate || self.max_depth() == 0 {
+        if self.counts(0) {
             l += self.zero_bounce_radiance(world, ray, &hit);
         }
         if self.max_depth() >= 1 {
