@@ -249,6 +249,27 @@ fn info_names_the_sampler_the_roulette_and_the_glass_splits() {
     }
 }
 
+/// `--info` reports the light choice the render makes: by power with
+/// `--light-choice power`, every light by default in a scene of one light.
+#[test]
+fn info_reports_the_light_choice_the_render_makes() {
+    let samples_line = |flags: &[&str]| {
+        let mut args = vec!["--info"];
+        args.extend(flags);
+        let (ok, stdout, stderr) = run(PATHTRACER, &args);
+        assert!(ok, "{stderr}");
+        stdout
+            .lines()
+            .find(|l| l.starts_with("plan: light sampling: on"))
+            .unwrap_or_else(|| panic!("no light sampling line in {stdout}"))
+            .to_string()
+    };
+    let by_power = samples_line(&["--light-choice", "power"]);
+    assert!(by_power.contains("by power"), "{by_power}");
+    let default = samples_line(&[]);
+    assert!(default.contains("every light"), "{default}");
+}
+
 /// `--course-exact` names its assignment and its adaptive sampling: 3-2
 /// (adaptive on by default) for `pathtracer`, 3-1 without part 5 for
 /// `part4-global`, whatever `=3-1` or `=3-2` says otherwise; `--mistake`

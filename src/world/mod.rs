@@ -34,6 +34,15 @@ pub struct WorldOptions {
     pub casters: CasterRule,
 }
 
+impl WorldOptions {
+    /// The scene's lights as a world with these options samples them (its
+    /// convention and its choice of lights): what `--info` reports and
+    /// the render uses.
+    pub fn lights(&self, scene: &Scene) -> LightSet {
+        LightSet::new(scene, self.light_convention).with_choice(self.light_choice)
+    }
+}
+
 /// A scene ready to be traced: intersector, materials and lights.
 pub struct World<'a, I> {
     pub intersector: I,
@@ -54,8 +63,7 @@ impl<'a, I: Intersector> World<'a, I> {
     }
 
     pub fn with_options(scene: &'a Scene, intersector: I, options: WorldOptions) -> Self {
-        let lights =
-            LightSet::new(scene, options.light_convention).with_choice(options.light_choice);
+        let lights = options.lights(scene);
         World {
             intersector,
             materials: &scene.materials,

@@ -15,7 +15,6 @@ use crate::environment::{
 use crate::glints::{allocate, Allocation, Decision};
 use crate::global::{DirectStrategy, PathTracer, Roulette};
 use crate::intersect::Intersector;
-use crate::lights::LightSet;
 use crate::plan::light_samples::with_environment_samples;
 use crate::plan::Plan;
 use crate::raygen::Camera;
@@ -141,7 +140,7 @@ fn run(args: &CourseArgs, part: impl Fn(&Scene) -> Result<Part>) -> Result<()> {
     );
     if args.info {
         crate::cli::say::text(&describe(&scene, &camera))?;
-        let mut lights = LightSet::new(&scene, args.world_options().light_convention);
+        let mut lights = args.world_options().lights(&scene);
         if let Some(env) = environment {
             lights = lights.with_environment(env);
         }
