@@ -253,21 +253,24 @@ fn info_names_the_sampler_the_roulette_and_the_glass_splits() {
 /// `--light-choice power`, every light by default in a scene of one light.
 #[test]
 fn info_reports_the_light_choice_the_render_makes() {
-    let samples_line = |flags: &[&str]| {
-        let mut args = vec!["--info"];
-        args.extend(flags);
-        let (ok, stdout, stderr) = run(PATHTRACER, &args);
-        assert!(ok, "{stderr}");
-        stdout
-            .lines()
-            .find(|l| l.starts_with("plan: light sampling: on"))
-            .unwrap_or_else(|| panic!("no light sampling line in {stdout}"))
-            .to_string()
-    };
+    let samples_line = |flags: &[&str]| info_line(PATHTRACER, flags, "plan: light sampling: on");
     let by_power = samples_line(&["--light-choice", "power"]);
     assert!(by_power.contains("by power"), "{by_power}");
     let default = samples_line(&[]);
     assert!(default.contains("every light"), "{default}");
+}
+
+/// The line of `binary --info FLAGS` that starts with `prefix`.
+fn info_line(binary: &str, flags: &[&str], prefix: &str) -> String {
+    let mut args = vec!["--info"];
+    args.extend(flags);
+    let (ok, stdout, stderr) = run(binary, &args);
+    assert!(ok, "{stderr}");
+    stdout
+        .lines()
+        .find(|l| l.starts_with(prefix))
+        .unwrap_or_else(|| panic!("no line {prefix:?} in {stdout}"))
+        .to_string()
 }
 
 /// `--course-exact` names its assignment and its adaptive sampling: 3-2
@@ -277,17 +280,7 @@ fn info_reports_the_light_choice_the_render_makes() {
 #[test]
 fn course_exact_names_its_assignment_and_defaults() {
     let part4 = env!("CARGO_BIN_EXE_part4-global");
-    let line = |binary: &str, flags: &[&str]| {
-        let mut args = vec!["--info"];
-        args.extend(flags);
-        let (ok, stdout, stderr) = run(binary, &args);
-        assert!(ok, "{stderr}");
-        stdout
-            .lines()
-            .find(|l| l.starts_with("course-exact: "))
-            .unwrap_or_else(|| panic!("no course-exact line in {stdout}"))
-            .to_string()
-    };
+    let line = |binary: &str, flags: &[&str]| info_line(binary, flags, "course-exact: ");
     let full = line(PATHTRACER, &["--course-exact"]);
     assert!(
         full.contains("assignment 3-2") && full.contains("adaptive 32 0.05"),
