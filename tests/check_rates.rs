@@ -92,11 +92,6 @@ fn part_5_mistakes_fail_and_are_named_first() {
     }
 }
 
-/// The rate statistic's false alarms, measured: 16 rate images of a
-/// correct solution (in process, independent seeds) against one null
-/// model at `alpha` = 0.1. At a true rate of 10 % or less, 8 or more
-/// alarms in 16 happen with probability below 1e-4 (binomial tail,
-/// 6.1e-5).
 /// A 3-1 solution that tests convergence one sample late and writes a
 /// pixel that stopped as the staff's library does (`n / (n - 1)` of its
 /// mean, `n - 1` samples) fails the handout's model and passes as that
@@ -115,6 +110,11 @@ fn the_staffs_stop_rule_passes_as_that_variant() {
     );
 }
 
+/// The rate statistic's false alarms, measured: 16 rate images of a
+/// correct solution (in process, independent seeds) against one null
+/// model at `alpha` = 0.1. At a true rate of 10 % or less, 8 or more
+/// alarms in 16 happen with probability below 1e-4 (binomial tail,
+/// 6.1e-5).
 #[test]
 fn the_rate_statistics_false_alarms_are_bounded() {
     let bench = Bench::new();

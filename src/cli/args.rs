@@ -53,7 +53,6 @@ pub const BUILTIN_DEFAULTS: Defaults = Defaults {
     resolution: [480, 360],
 };
 
-/// The course's flags that apply to parts 1 to 5.
 /// The flags of this project's own rendering, which `--course-exact`,
 /// `--mistake` and `--course-choice` (the course's image) exclude.
 const BEYOND_THE_COURSE: [&str; 13] = [
@@ -72,6 +71,7 @@ const BEYOND_THE_COURSE: [&str; 13] = [
     "no_plan",
 ];
 
+/// The course's flags that apply to parts 1 to 5.
 #[derive(Parser, Clone, Debug, PartialEq)]
 #[command(version, about, args_override_self = true)]
 pub struct CourseArgs {

@@ -11,7 +11,9 @@ use crate::math::Rgb;
 
 /// [`super::Mistake::ShadowAcne`]: the shadow ray starts at the hit point
 /// itself with `min_t = 0`, so the surface it leaves, met again at `t`
-/// within rounding of 0, blocks about half of the samples.
+/// within rounding of 0, blocks a share of the samples that rounding sets:
+/// about half here; in a student's double arithmetic from 37 % to 88 % by
+/// surface (docs/maintainers/checker.md).
 pub fn shadow_ray_without_offset(hit: &Hit, sample: &LightSample) -> Ray {
     Ray {
         t_max: sample.distance,
