@@ -35,6 +35,7 @@ pub mod battery;
 mod means;
 pub mod outcome;
 pub mod patterns;
+pub mod probe;
 pub mod rates;
 pub mod report;
 pub mod scan;

@@ -11,7 +11,9 @@ use indicatif::{ProgressBar, ProgressStyle};
 
 use super::values::{whole, AssignmentArg, Number};
 use crate::check::battery::{assignment_of, battery_for};
-use crate::check::{judge, report, table, CheckResult, CheckScene, Outcome, Stage, Student, ALPHA};
+use crate::check::{
+    judge, probe, report, table, CheckResult, CheckScene, Outcome, Stage, Student, ALPHA,
+};
 use crate::course::Assignment;
 
 /// Check your own course renderer: runs it through the course's command
@@ -19,9 +21,15 @@ use crate::course::Assignment;
 #[derive(Parser, Debug)]
 #[command(name = "check")]
 pub struct CheckArgs {
-    /// Your `pathtracer` binary, built from the course's starter.
+    /// Your `pathtracer` binary, built from the course's starter: its
+    /// images are checked.
+    #[arg(long, required_unless_present = "source")]
+    pub student: Option<PathBuf>,
+    /// Your starter tree (the folder with `CMakeLists.txt`): each function
+    /// you wrote is compiled with a probe of this project's and tested on
+    /// its own.
     #[arg(long)]
-    pub student: PathBuf,
+    pub source: Option<PathBuf>,
     /// Only the checks of these parts (repeatable; all of the
     /// assignment's by default). Parts 6 to 8 are 3-2's: naming them
     /// checks a 3-2 binary.
@@ -66,14 +74,39 @@ pub fn status(results: &[CheckResult], binary_runs: bool) -> ExitCode {
     }
 }
 
-/// Runs the battery, prints the table and says how it went
-/// ([`status`]); an error only where nothing can be checked (no output
-/// folder, no scene).
+/// Probes the functions of `--source` and checks the images of
+/// `--student`, whichever are given, and says how it went: 0 when all
+/// passed, 1 when one did not; an error where nothing can be checked (the
+/// probe does not build, no output folder, no scene).
 pub fn check(args: &CheckArgs) -> Result<ExitCode, Box<dyn Error>> {
+    let mut functions_pass = true;
+    if let Some(source) = &args.source {
+        crate::say_err!(
+            "building the probe against {} (its first build takes a few minutes)",
+            source.display()
+        );
+        let results = probe::run(source, &args.out, &args.parts, args.threads)?;
+        crate::cli::say::text(&probe::table(&results))?;
+        crate::cli::say::text(&probe::details(&results))?;
+        functions_pass = probe::all_pass(&results);
+    }
+    let images = match &args.student {
+        Some(binary) => check_images(args, binary)?,
+        None => ExitCode::SUCCESS,
+    };
+    Ok(match (functions_pass, images) {
+        (false, ExitCode::SUCCESS) => ExitCode::from(1),
+        (_, code) => code,
+    })
+}
+
+/// Runs the battery on `binary`, prints the table and says how it went
+/// ([`status`]).
+fn check_images(args: &CheckArgs, binary: &std::path::Path) -> Result<ExitCode, Box<dyn Error>> {
     let work = args.out.join("runs");
     std::fs::create_dir_all(&work).map_err(|e| format!("{}: {e}", work.display()))?;
     let student = Student {
-        binary: std::path::absolute(&args.student)?,
+        binary: std::path::absolute(binary)?,
         work,
         timeout: Duration::from_secs(args.timeout),
     };
@@ -262,7 +295,7 @@ mod tests {
         let parts = |words: &str| -> Result<(Assignment, Vec<u8>), String> {
             let args = parse(words);
             let student = Student {
-                binary: args.student.clone(),
+                binary: args.student.clone().unwrap(),
                 work: std::env::temp_dir(),
                 timeout: Duration::from_secs(1),
             };

@@ -1,0 +1,243 @@
+//! `check --source DIR`: each function a student writes, probed in their
+//! own C++.
+//!
+//! A driver of this project's (`driver.cpp`, a command interpreter that
+//! constructs the course's objects and calls the student's functions; it
+//! holds none of the assignment's solutions) is compiled with the
+//! student's sources through their own CMake ([`build`]), then fed
+//! scripts of inputs ([`driver`], protocol in `PROTOCOL.md`). Each probe
+//! compares the answers with exact ones computed here and concludes
+//! ([`verdict`]) pass, not written yet (the starter's stub behaviour),
+//! fail (the first failing input, what was expected, what came back, and
+//! the catalogued mistake it is), or broken (a crash or a hang, at the
+//! command that caused it).
+//!
+//! - [`camera`] tests `Camera::generate_ray`;
+//! - [`triangle`], [`sphere`]: the primitives' `intersect`,
+//!   `has_intersection` and `Sphere::test`;
+//! - [`bbox`] tests `BBox::intersect`;
+//! - [`bvh`](mod@bvh): `BVHAccel::construct_bvh` by its tree, `intersect` and
+//!   `has_intersection` against a scan of every triangle;
+//! - [`diffuse`]: `DiffuseBSDF::f` and `sample_f`, its directions by
+//!   [`warp`]'s chi-square test against the pdfs it returns.
+
+pub mod bbox;
+pub mod build;
+pub mod bvh;
+pub mod camera;
+pub mod diffuse;
+pub mod driver;
+pub mod geometry;
+pub mod sphere;
+pub mod triangle;
+pub mod verdict;
+pub mod warp;
+
+use std::path::Path;
+use std::time::Duration;
+
+pub use driver::Driver;
+pub use verdict::Verdict;
+
+/// One probe: the function it tests and how.
+#[derive(Debug)]
+pub struct Probe {
+    /// The function, as the starter names it.
+    pub function: &'static str,
+    /// Its file in the starter.
+    pub file: &'static str,
+    pub part: u8,
+    /// The functions it calls: when one of them fails, so may this.
+    pub needs: &'static [&'static str],
+    pub run: fn(&Driver) -> Verdict,
+}
+
+/// Every probe, in the order of the assignment.
+pub const PROBES: &[Probe] = &[
+    Probe {
+        function: "Camera::generate_ray",
+        file: "src/pathtracer/camera.cpp",
+        part: 1,
+        needs: &[],
+        run: camera::generate_ray,
+    },
+    Probe {
+        function: "Triangle::has_intersection",
+        file: "src/scene/triangle.cpp",
+        part: 1,
+        needs: &[],
+        run: triangle::has_intersection,
+    },
+    Probe {
+        function: "Triangle::intersect",
+        file: "src/scene/triangle.cpp",
+        part: 1,
+        needs: &[],
+        run: triangle::intersect,
+    },
+    Probe {
+        function: "Sphere::test",
+        file: "src/scene/sphere.cpp",
+        part: 1,
+        needs: &[],
+        run: sphere::test,
+    },
+    Probe {
+        function: "Sphere::has_intersection",
+        file: "src/scene/sphere.cpp",
+        part: 1,
+        needs: &["Sphere::test"],
+        run: sphere::has_intersection,
+    },
+    Probe {
+        function: "Sphere::intersect",
+        file: "src/scene/sphere.cpp",
+        part: 1,
+        needs: &["Sphere::test"],
+        run: sphere::intersect,
+    },
+    Probe {
+        function: "BBox::intersect",
+        file: "src/scene/bbox.cpp",
+        part: 2,
+        needs: &[],
+        run: bbox::intersect,
+    },
+    Probe {
+        function: "BVHAccel::construct_bvh",
+        file: "src/scene/bvh.cpp",
+        part: 2,
+        needs: &[],
+        run: bvh::construct,
+    },
+    Probe {
+        function: "BVHAccel::has_intersection",
+        file: "src/scene/bvh.cpp",
+        part: 2,
+        needs: &[
+            "Triangle::has_intersection",
+            "BBox::intersect",
+            "BVHAccel::construct_bvh",
+        ],
+        run: bvh::has_intersection,
+    },
+    Probe {
+        function: "BVHAccel::intersect",
+        file: "src/scene/bvh.cpp",
+        part: 2,
+        needs: &[
+            "Triangle::intersect",
+            "BBox::intersect",
+            "BVHAccel::construct_bvh",
+        ],
+        run: bvh::intersect,
+    },
+    Probe {
+        function: "DiffuseBSDF::f",
+        file: "src/pathtracer/bsdf.cpp",
+        part: 3,
+        needs: &[],
+        run: diffuse::f,
+    },
+    Probe {
+        function: "DiffuseBSDF::sample_f",
+        file: "src/pathtracer/bsdf.cpp",
+        part: 3,
+        needs: &["DiffuseBSDF::f"],
+        run: diffuse::sample_f,
+    },
+];
+
+/// A probe and its verdict.
+#[derive(Debug)]
+pub struct ProbeResult {
+    pub probe: &'static Probe,
+    pub verdict: Verdict,
+    /// A function it needs that did not pass, if any.
+    pub blocked_by: Option<&'static str>,
+}
+
+/// Builds the driver against the tree at `source` (in `out/probe`) and
+/// runs the probes of `parts` (all when empty). An error only when the
+/// driver cannot be built: the step, the compiler's first error and its
+/// file.
+pub fn run(source: &Path, out: &Path, parts: &[u8], jobs: u16) -> Result<Vec<ProbeResult>, String> {
+    let binary = build::build_driver(source, out, jobs)?;
+    let driver = Driver {
+        binary,
+        work: std::path::absolute(out.join("probe").join("runs")).map_err(|e| e.to_string())?,
+        timeout: Duration::from_secs(60),
+    };
+    let mut results: Vec<ProbeResult> = Vec::new();
+    for probe in PROBES
+        .iter()
+        .filter(|p| parts.is_empty() || parts.contains(&p.part))
+    {
+        let verdict = (probe.run)(&driver);
+        let blocked_by = probe.needs.iter().copied().find(|need| {
+            results
+                .iter()
+                .any(|r| r.probe.function == *need && !r.verdict.is_pass())
+        });
+        // A failure that may be the needed function's names no mistake
+        // of its own: the one to fix is the other.
+        let verdict = match verdict {
+            Verdict::Fail(mut f) if blocked_by.is_some() => {
+                f.mistake = None;
+                Verdict::Fail(f)
+            }
+            v => v,
+        };
+        results.push(ProbeResult {
+            probe,
+            verdict,
+            blocked_by,
+        });
+    }
+    Ok(results)
+}
+
+/// The summary table: part, function, verdict, the likely mistake.
+pub fn table(results: &[ProbeResult]) -> String {
+    let mut text = format!(
+        "{:<4} {:<30} {:<8} {}\n",
+        "part", "function", "verdict", "likely mistake"
+    );
+    for r in results {
+        let mistake = match &r.verdict {
+            Verdict::Fail(f) => f.mistake.map_or("-".to_owned(), |m| m.to_string()),
+            _ => "-".to_owned(),
+        };
+        text.push_str(&format!(
+            "{:<4} {:<30} {:<8} {}\n",
+            r.probe.part,
+            r.probe.function,
+            r.verdict.word(),
+            mistake
+        ));
+    }
+    text
+}
+
+/// The details under the table: each probe that did not pass, with its
+/// input, the expected and the actual answer.
+pub fn details(results: &[ProbeResult]) -> String {
+    let mut text = String::new();
+    for r in results.iter().filter(|r| !r.verdict.is_pass()) {
+        text.push_str(&format!(
+            "\n{} ({}): {}\n",
+            r.probe.function, r.probe.file, r.verdict
+        ));
+        if let Some(need) = r.blocked_by {
+            text.push_str(&format!(
+                "    it calls {need}, which does not pass: fix that first\n"
+            ));
+        }
+    }
+    text
+}
+
+/// Whether every probe passed.
+pub fn all_pass(results: &[ProbeResult]) -> bool {
+    results.iter().all(|r| r.verdict.is_pass())
+}
