@@ -11,6 +11,8 @@ use std::io::{self, Cursor};
 use std::path::{Path, PathBuf};
 
 use super::battery::SIZE;
+use super::probe::report::{anchor, probe_of};
+use super::probe::ProbeResult;
 use super::scan::WINDOW;
 use super::stats::{block_index, BLOCK};
 use super::verdict::{CheckImages, CheckResult, Outcome};
@@ -39,7 +41,7 @@ pub fn base64(bytes: &[u8]) -> String {
 }
 
 /// An 8-bit RGB image as a PNG data URI.
-fn data_uri(width: u32, height: u32, rgb: &[u8]) -> String {
+pub(crate) fn data_uri(width: u32, height: u32, rgb: &[u8]) -> String {
     let mut png = Vec::new();
     let encoded = image::RgbImage::from_raw(width, height, rgb.to_vec())
         .map(|im| im.write_to(&mut Cursor::new(&mut png), image::ImageFormat::Png));
@@ -72,7 +74,8 @@ fn ratio_map(ratio: &[f64]) -> (u32, u32, Vec<u8>) {
     (w, h, rgb)
 }
 
-fn escape(text: &str) -> String {
+/// `text` with `&`, `<` and `>` escaped for HTML.
+pub(crate) fn escape(text: &str) -> String {
     text.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")
@@ -91,13 +94,13 @@ fn figure(caption: &str, width: u32, height: u32, rgb: &[u8]) -> String {
 
 /// The catalogue's pages of symptoms in this project's docs, where the
 /// report links each named mistake (its section's anchor is its name).
-const SYMPTOMS: &str = concat!(
+pub(crate) const SYMPTOMS: &str = concat!(
     "file://",
     env!("CARGO_MANIFEST_DIR"),
     "/docs/13-symptoms.md"
 );
 
-fn section(i: usize, r: &CheckResult) -> String {
+fn section(i: usize, r: &CheckResult, probes: &[ProbeResult]) -> String {
     let c = &r.check;
     let run = if r.command.is_empty() {
         format!("Flags: <code>{}</code>.", escape(&c.flags(2).join(" ")))
@@ -147,6 +150,17 @@ fn section(i: usize, r: &CheckResult) -> String {
                 escape(what),
                 test_values(*statistic, *threshold, *region, *region_threshold)
             );
+            let pointed = std::iter::once(c.function)
+                .chain(r.outcome.likely_mistake().map(|m| m.info().function));
+            if let Some(k) = pointed.filter_map(|f| probe_of(probes, f)).next() {
+                let _ = write!(
+                    html,
+                    r##"<p>The probe of <a href="#{}"><code>{}</code></a> tests that function alone: {}.</p>"##,
+                    anchor(k),
+                    escape(probes[k].probe.function),
+                    probes[k].verdict.word()
+                );
+            }
         }
         Outcome::Skipped(why) | Outcome::Error(why) => {
             let _ = write!(html, "<p>{}</p>", escape(why));
@@ -249,15 +263,33 @@ fn figures(images: &CheckImages) -> String {
 
 /// The page for `results` of the binary `student` on `scene`.
 pub fn html(student: &str, scene: &str, results: &[CheckResult]) -> String {
+    page(Some((student, scene, results)), None)
+}
+
+/// The functions probed in a tree ([`crate::check::probe`]): the tree,
+/// the results, and the folder of the probe's runs (its pictures).
+pub type Functions<'a> = (&'a str, &'a [ProbeResult], &'a Path);
+
+/// The page: the functions of `--source` when probed, then the images of
+/// `--student` (the binary, the scene, the checks) when checked; a failed
+/// check links to the probe of its function.
+pub fn page(images: Option<(&str, &str, &[CheckResult])>, functions: Option<Functions>) -> String {
     let mut page = String::from(
         r#"<!DOCTYPE html>
-<html lang="en"><head><meta charset="utf-8"/><title>check: your renderer against the course's image</title>
+<html lang="en"><head><meta charset="utf-8"/><title>check: your renderer against the course's</title>
 <style>body{font-family:sans-serif;max-width:60em;margin:auto}img{image-rendering:pixelated}
 figure{display:inline-block;margin:0.3em;width:300px;vertical-align:top}.FAIL,.error{color:#b00}.pass{color:#070}.skipped{color:#777}
 table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:0.2em 0.5em}</style></head><body>
-<h1>Your renderer against the course's image</h1>
 "#,
     );
+    let probes = functions.map_or(&[][..], |(_, results, _)| results);
+    if let Some((source, results, runs)) = functions {
+        page += &super::probe::report::section(source, results, runs);
+    }
+    let Some((student, scene, results)) = images else {
+        return page + "</body></html>\n";
+    };
+    page += "<h1>Your renderer against the course's image</h1>\n";
     let _ = write!(
         page,
         "<p>Binary <code>{}</code>, scene <code>{}</code>. Each check compares your image with the distribution of a correct course solution's images at the same flags (docs/15-check.md).</p>\n<table><tr><th>part</th><th>check</th><th>verdict</th><th>likely mistake</th></tr>",
@@ -281,7 +313,7 @@ table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:0.2em 0.5em}<
     }
     page += "</table>\n";
     for (i, r) in results.iter().enumerate() {
-        page += &section(i, r);
+        page += &section(i, r, probes);
     }
     page + "</body></html>\n"
 }

@@ -79,22 +79,30 @@ pub fn status(results: &[CheckResult], binary_runs: bool) -> ExitCode {
 /// passed, 1 when one did not; an error where nothing can be checked (the
 /// probe does not build, no output folder, no scene).
 pub fn check(args: &CheckArgs) -> Result<ExitCode, Box<dyn Error>> {
-    let mut functions_pass = true;
+    let mut probed = Vec::new();
     if let Some(source) = &args.source {
         crate::say_err!(
             "building the probe against {} (its first build takes a few minutes)",
             source.display()
         );
-        let results = probe::run(source, &args.out, &args.parts, args.threads)?;
-        crate::cli::say::text(&probe::table(&results))?;
-        crate::cli::say::text(&probe::details(&results))?;
-        functions_pass = probe::all_pass(&results);
+        probed = probe::run(source, &args.out, &args.parts, args.threads)?;
+        crate::cli::say::text(&probe::table(&probed))?;
+        crate::cli::say::text(&probe::details(&probed))?;
     }
+    let source = args.source.as_ref().map(|s| s.display().to_string());
+    let runs = args.out.join("probe").join("runs");
+    let functions = source.as_deref().map(|s| (s, &probed[..], runs.as_path()));
     let images = match &args.student {
-        Some(binary) => check_images(args, binary)?,
-        None => ExitCode::SUCCESS,
+        Some(binary) => check_images(args, binary, functions)?,
+        None => {
+            let page = report::page(None, functions);
+            let path = report::write_report(&args.out, &page)
+                .map_err(|e| format!("{}: {e}", args.out.join("report.html").display()))?;
+            crate::say!("\nwrote {}", path.display())?;
+            ExitCode::SUCCESS
+        }
     };
-    Ok(match (functions_pass, images) {
+    Ok(match (probe::all_pass(&probed), images) {
         (false, ExitCode::SUCCESS) => ExitCode::from(1),
         (_, code) => code,
     })
@@ -102,7 +110,11 @@ pub fn check(args: &CheckArgs) -> Result<ExitCode, Box<dyn Error>> {
 
 /// Runs the battery on `binary`, prints the table and says how it went
 /// ([`status`]).
-fn check_images(args: &CheckArgs, binary: &std::path::Path) -> Result<ExitCode, Box<dyn Error>> {
+fn check_images(
+    args: &CheckArgs,
+    binary: &std::path::Path,
+    functions: Option<report::Functions>,
+) -> Result<ExitCode, Box<dyn Error>> {
     let work = args.out.join("runs");
     std::fs::create_dir_all(&work).map_err(|e| format!("{}: {e}", work.display()))?;
     let student = Student {
@@ -197,10 +209,13 @@ fn check_images(args: &CheckArgs, binary: &std::path::Path) -> Result<ExitCode, 
     bar.finish_and_clear();
     crate::cli::say::text(&table(&results))?;
     let files: Vec<&str> = stages.iter().map(|(_, file, _)| file.as_str()).collect();
-    let page = report::html(
-        &student.binary.to_string_lossy(),
-        &files.join(", "),
-        &results,
+    let page = report::page(
+        Some((
+            &student.binary.to_string_lossy(),
+            &files.join(", "),
+            &results,
+        )),
+        functions,
     );
     let path = report::write_report(&args.out, &page)
         .map_err(|e| format!("{}: {e}", args.out.join("report.html").display()))?;

@@ -8,6 +8,7 @@ pub mod exact;
 pub mod geometry;
 pub mod radiometry;
 pub mod scenes;
+pub mod starters;
 pub mod stats;
 pub mod symptoms;
 
@@ -17,5 +18,6 @@ pub use exact::*;
 pub use geometry::*;
 pub use radiometry::*;
 pub use scenes::*;
+pub use starters::*;
 pub use stats::*;
 pub use symptoms::*;

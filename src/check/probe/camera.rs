@@ -11,26 +11,48 @@
 
 use glam::DVec3;
 
-use super::driver::Driver;
+use super::driver::{Driver, Transcript};
 use super::geometry::{close, same_direction, show, vec_at};
 use super::verdict::{failure, Cases, Failure, Verdict};
 use crate::mistakes::Mistake;
 
-/// A camera as `configure` and `place` take it.
-struct Setup {
-    hfov: f64,
-    vfov: f64,
-    size: (u32, u32),
-    target: DVec3,
-    phi: f64,
-    theta: f64,
-    r: f64,
-    clip: (f64, f64),
+/// A camera as `configure` and `place` take it (the thin lens's probe,
+/// [`lens`](super::lens), places these too).
+pub(super) struct Setup {
+    pub(super) hfov: f64,
+    pub(super) vfov: f64,
+    pub(super) size: (u32, u32),
+    pub(super) target: DVec3,
+    pub(super) phi: f64,
+    pub(super) theta: f64,
+    pub(super) r: f64,
+    pub(super) clip: (f64, f64),
+}
+
+impl Setup {
+    /// The driver's `camera` command, which configures and places it.
+    pub(super) fn command(&self) -> String {
+        format!(
+            "camera {} {} {} {} {} {} {} {} {} {} {} {}",
+            self.hfov,
+            self.vfov,
+            self.size.0,
+            self.size.1,
+            self.target.x,
+            self.target.y,
+            self.target.z,
+            self.phi,
+            self.theta,
+            self.r,
+            self.clip.0,
+            self.clip.1
+        )
+    }
 }
 
 /// The cameras, simplest first: one looking down -z as the course's
 /// boxes do, then two turned and tilted, one wide and one tall.
-fn setups() -> [Setup; 3] {
+pub(super) fn setups() -> [Setup; 3] {
     [
         Setup {
             hfov: 50.0,
@@ -78,16 +100,24 @@ const PIXELS: [(f64, f64); 8] = [
 ];
 
 /// The camera the driver reports after `configure` and `place`.
-struct Placed {
-    pos: DVec3,
-    c2w: [DVec3; 3],
+pub(super) struct Placed {
+    pub(super) pos: DVec3,
+    pub(super) c2w: [DVec3; 3],
     /// `tan(hFov / 2)`, `tan(vFov / 2)`.
-    tan_half: (f64, f64),
-    vfov_deg: f64,
-    clip: (f64, f64),
+    pub(super) tan_half: (f64, f64),
+    pub(super) vfov_deg: f64,
+    pub(super) clip: (f64, f64),
 }
 
 impl Placed {
+    /// The camera command `i` of `t` placed, looking at `target`; or the
+    /// verdict when its answer is not the 10 numbers of one.
+    pub(super) fn read(t: &Transcript, i: usize, target: DVec3) -> Result<Placed, Verdict> {
+        t.exactly(i, 10)
+            .map(|v| Placed::from_answer(&v, target))
+            .map_err(|stop| Verdict::stopped(&stop, t.command(i)))
+    }
+
     /// From the answer `POS UP VFOV AR NCLIP FCLIP` to a camera placed
     /// looking at `target`.
     fn from_answer(v: &[f64], target: DVec3) -> Placed {
@@ -106,7 +136,7 @@ impl Placed {
 
     /// The camera-space direction through `(x, y)` for sensor half-sizes
     /// `tan_half`.
-    fn sensor(x: f64, y: f64, tan_half: (f64, f64)) -> DVec3 {
+    pub(super) fn sensor(x: f64, y: f64, tan_half: (f64, f64)) -> DVec3 {
         DVec3::new(
             (2.0 * x - 1.0) * tan_half.0,
             (2.0 * y - 1.0) * tan_half.1,
@@ -114,8 +144,20 @@ impl Placed {
         )
     }
 
+    /// The camera-space vector `d` in world space, `c2w d`.
+    pub(super) fn rotate(&self, d: DVec3) -> DVec3 {
+        self.c2w[0] * d.x + self.c2w[1] * d.y + self.c2w[2] * d.z
+    }
+
+    /// The camera-space direction `d` in world space, normalised.
     fn to_world(&self, d: DVec3) -> DVec3 {
-        (self.c2w[0] * d.x + self.c2w[1] * d.y + self.c2w[2] * d.z).normalize()
+        self.rotate(d).normalize()
+    }
+
+    /// The camera-space coordinates of the world point `p`.
+    pub(super) fn to_camera(&self, p: DVec3) -> DVec3 {
+        let q = p - self.pos;
+        DVec3::new(q.dot(self.c2w[0]), q.dot(self.c2w[1]), q.dot(self.c2w[2]))
     }
 
     /// The catalogued mistakes' directions through `(x, y)`.
@@ -147,21 +189,7 @@ impl Placed {
 pub fn generate_ray(driver: &Driver) -> Verdict {
     let mut commands = Vec::new();
     for s in setups() {
-        commands.push(format!(
-            "camera {} {} {} {} {} {} {} {} {} {} {} {}",
-            s.hfov,
-            s.vfov,
-            s.size.0,
-            s.size.1,
-            s.target.x,
-            s.target.y,
-            s.target.z,
-            s.phi,
-            s.theta,
-            s.r,
-            s.clip.0,
-            s.clip.1
-        ));
+        commands.push(s.command());
         commands.extend(PIXELS.iter().map(|(x, y)| format!("ray {x} {y}")));
     }
     let transcript = match driver.run("generate_ray", commands) {
@@ -172,9 +200,9 @@ pub fn generate_ray(driver: &Driver) -> Verdict {
     let mut stub_like = true;
     let mut i = 0;
     for s in setups() {
-        let placed = match transcript.exactly(i, 10) {
-            Ok(v) => Placed::from_answer(&v, s.target),
-            Err(stop) => return Verdict::stopped(&stop, transcript.command(i)),
+        let placed = match Placed::read(&transcript, i, s.target) {
+            Ok(p) => p,
+            Err(v) => return v,
         };
         i += 1;
         for &(x, y) in &PIXELS {

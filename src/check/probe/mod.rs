@@ -16,18 +16,41 @@
 //! - [`triangle`], [`sphere`]: the primitives' `intersect`,
 //!   `has_intersection` and `Sphere::test`;
 //! - [`bbox`] tests `BBox::intersect`;
-//! - [`bvh`](mod@bvh): `BVHAccel::construct_bvh` by its tree, `intersect` and
-//!   `has_intersection` against a scan of every triangle;
+//! - [`bvh_tree`]: `BVHAccel::construct_bvh` by its tree; [`bvh`](mod@bvh):
+//!   `intersect` and `has_intersection` against a scan of every triangle;
 //! - [`diffuse`]: `DiffuseBSDF::f` and `sample_f`, its directions by
-//!   [`warp`]'s chi-square test against the pdfs it returns.
+//!   [`warp`]'s chi-square test against the pdfs it returns;
+//! - [`reflection`]: `BSDF::reflect` and `BSDF::refract`; [`specular`]:
+//!   `MirrorBSDF::sample_f` and `RefractionBSDF::sample_f`; [`glass`]:
+//!   `GlassBSDF::sample_f`, its choice of lobe by a binomial test;
+//! - [`microfacet`]: `MicrofacetBSDF::D` and `f`; [`conductor`]: its `F`;
+//!   [`microfacet_sample`]: its `sample_f`, the directions by
+//!   [`density`]'s chi-square test (cells integrated numerically);
+//! - [`environment`]: `EnvironmentLight::sample_dir`, [`env_sample`]: its
+//!   `sample_L`, both on [`envmap`]'s map;
+//! - [`lens`](mod@lens): `Camera::generate_ray_for_thin_lens`.
 
 pub mod bbox;
 pub mod build;
 pub mod bvh;
+pub mod bvh_tree;
 pub mod camera;
+pub mod conductor;
+pub mod density;
 pub mod diffuse;
 pub mod driver;
+pub mod env_sample;
+pub mod environment;
+pub mod envmap;
 pub mod geometry;
+pub mod glass;
+pub mod lens;
+pub mod microfacet;
+pub mod microfacet_sample;
+pub mod picture;
+pub mod reflection;
+pub mod report;
+pub mod specular;
 pub mod sphere;
 pub mod triangle;
 pub mod verdict;
@@ -108,7 +131,7 @@ pub const PROBES: &[Probe] = &[
         file: "src/scene/bvh.cpp",
         part: 2,
         needs: &[],
-        run: bvh::construct,
+        run: bvh_tree::construct,
     },
     Probe {
         function: "BVHAccel::has_intersection",
@@ -146,6 +169,90 @@ pub const PROBES: &[Probe] = &[
         needs: &["DiffuseBSDF::f"],
         run: diffuse::sample_f,
     },
+    Probe {
+        function: "BSDF::reflect",
+        file: "src/pathtracer/advanced_bsdf.cpp",
+        part: 6,
+        needs: &[],
+        run: reflection::reflect_probe,
+    },
+    Probe {
+        function: "BSDF::refract",
+        file: "src/pathtracer/advanced_bsdf.cpp",
+        part: 6,
+        needs: &[],
+        run: reflection::refract_probe,
+    },
+    Probe {
+        function: "MirrorBSDF::sample_f",
+        file: "src/pathtracer/advanced_bsdf.cpp",
+        part: 6,
+        needs: &["BSDF::reflect"],
+        run: specular::mirror,
+    },
+    Probe {
+        function: "RefractionBSDF::sample_f",
+        file: "src/pathtracer/advanced_bsdf.cpp",
+        part: 6,
+        needs: &["BSDF::refract"],
+        run: specular::refraction,
+    },
+    Probe {
+        function: "GlassBSDF::sample_f",
+        file: "src/pathtracer/advanced_bsdf.cpp",
+        part: 6,
+        needs: &["BSDF::refract", "BSDF::reflect"],
+        run: glass::sample_f,
+    },
+    Probe {
+        function: "MicrofacetBSDF::D",
+        file: "src/pathtracer/advanced_bsdf.cpp",
+        part: 6,
+        needs: &[],
+        run: microfacet::d,
+    },
+    Probe {
+        function: "MicrofacetBSDF::F",
+        file: "src/pathtracer/advanced_bsdf.cpp",
+        part: 6,
+        needs: &[],
+        run: conductor::f_fresnel,
+    },
+    Probe {
+        function: "MicrofacetBSDF::f",
+        file: "src/pathtracer/advanced_bsdf.cpp",
+        part: 6,
+        needs: &["MicrofacetBSDF::F", "MicrofacetBSDF::D"],
+        run: microfacet::f,
+    },
+    Probe {
+        function: "MicrofacetBSDF::sample_f",
+        file: "src/pathtracer/advanced_bsdf.cpp",
+        part: 6,
+        needs: &["MicrofacetBSDF::f", "MicrofacetBSDF::D"],
+        run: microfacet_sample::sample_f,
+    },
+    Probe {
+        function: "EnvironmentLight::sample_dir",
+        file: "src/scene/environment_light.cpp",
+        part: 7,
+        needs: &[],
+        run: environment::sample_dir,
+    },
+    Probe {
+        function: "EnvironmentLight::sample_L",
+        file: "src/scene/environment_light.cpp",
+        part: 7,
+        needs: &[],
+        run: env_sample::sample_l,
+    },
+    Probe {
+        function: "Camera::generate_ray_for_thin_lens",
+        file: "src/pathtracer/camera_lens.cpp",
+        part: 8,
+        needs: &[],
+        run: lens::thin_lens,
+    },
 ];
 
 /// A probe and its verdict.
@@ -168,6 +275,15 @@ pub fn run(source: &Path, out: &Path, parts: &[u8], jobs: u16) -> Result<Vec<Pro
         work: std::path::absolute(out.join("probe").join("runs")).map_err(|e| e.to_string())?,
         timeout: Duration::from_secs(60),
     };
+    // Pictures of an earlier run must not stand for this one's.
+    if let Ok(old) = std::fs::read_dir(&driver.work) {
+        for file in old
+            .flatten()
+            .filter(|f| f.path().extension().is_some_and(|e| e == "png"))
+        {
+            let _ = std::fs::remove_file(file.path());
+        }
+    }
     let mut results: Vec<ProbeResult> = Vec::new();
     for probe in PROBES
         .iter()
@@ -200,7 +316,7 @@ pub fn run(source: &Path, out: &Path, parts: &[u8], jobs: u16) -> Result<Vec<Pro
 /// The summary table: part, function, verdict, the likely mistake.
 pub fn table(results: &[ProbeResult]) -> String {
     let mut text = format!(
-        "{:<4} {:<30} {:<8} {}\n",
+        "{:<4} {:<36} {:<8} {}\n",
         "part", "function", "verdict", "likely mistake"
     );
     for r in results {
@@ -209,7 +325,7 @@ pub fn table(results: &[ProbeResult]) -> String {
             _ => "-".to_owned(),
         };
         text.push_str(&format!(
-            "{:<4} {:<30} {:<8} {}\n",
+            "{:<4} {:<36} {:<8} {}\n",
             r.probe.part,
             r.probe.function,
             r.verdict.word(),

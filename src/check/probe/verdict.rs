@@ -77,10 +77,15 @@ impl fmt::Display for Verdict {
             Verdict::NotWritten(why) => write!(f, "not written yet: {why}"),
             Verdict::Waits(why) => write!(f, "cannot be probed yet: {why}"),
             Verdict::Fail(fail) => {
+                let counts = if fail.cases > 1 {
+                    format!(" ({} of {} cases)", fail.failed, fail.cases)
+                } else {
+                    String::new()
+                };
                 write!(
                     f,
-                    "FAIL ({} of {} cases): {}\n    input:    {}\n    expected: {}\n    got:      {}",
-                    fail.failed, fail.cases, fail.what, fail.input, fail.expected, fail.got
+                    "FAIL{counts}: {}\n    input:    {}\n    expected: {}\n    got:      {}",
+                    fail.what, fail.input, fail.expected, fail.got
                 )?;
                 if let Some(m) = fail.mistake {
                     write!(

@@ -1,0 +1,210 @@
+// Short, plain stand-ins for the functions a student writes in the 3-1
+// starter (parts 1 to 3), for tests/check_source_standins.rs. Each block
+// starts with a marker `//== FILE :: LINE`: the test replaces, in its copy
+// of the starter, the definition that starts with LINE and ends at the
+// next `}` in column 0 with the block. Each catalogued mistake the test
+// injects is one `STANDIN_...` macro of src/standin_mistake.h.
+
+//== src/pathtracer/camera.cpp :: Ray Camera::generate_ray(double x, double y) const {
+Ray Camera::generate_ray(double x, double y) const {
+#if defined(STANDIN_FOV_IN_DEGREES)
+  double w = tan(hFov / 2), h = tan(vFov / 2);
+#elif defined(STANDIN_FOV_FULL_ANGLE)
+  double w = tan(radians(hFov)), h = tan(radians(vFov));
+#else
+  double w = tan(radians(hFov) / 2), h = tan(radians(vFov) / 2);
+#endif
+  Vector3D d((2 * x - 1) * w, (2 * y - 1) * h, -1);
+#ifndef STANDIN_RAY_IN_CAMERA_SPACE
+  d = c2w * d;
+#endif
+  Ray ray(pos, d.unit());
+  ray.min_t = nClip;
+  ray.max_t = fClip;
+  return ray;
+}
+
+//== src/scene/triangle.cpp :: bool Triangle::has_intersection(const Ray &r) const {
+// Moller-Trumbore: whether r meets the triangle in [min_t, max_t], with
+// its t and barycentrics.
+static bool hit_triangle(const Ray &r, const Vector3D &p1, const Vector3D &p2,
+                         const Vector3D &p3, double &t, double &b1, double &b2) {
+  Vector3D e1 = p2 - p1, e2 = p3 - p1, s = r.o - p1;
+  Vector3D s1 = cross(r.d, e2), s2 = cross(s, e1);
+  double det = dot(s1, e1);
+  t = dot(s2, e2) / det;
+  b1 = dot(s1, s) / det;
+  b2 = dot(s2, r.d) / det;
+#ifdef STANDIN_TRIANGLE_CHAINED_COMPARISON
+  bool in_range = r.min_t <= t <= r.max_t;
+#else
+  bool in_range = r.min_t <= t && t <= r.max_t;
+#endif
+  return in_range && b1 >= 0 && b2 >= 0 && b1 + b2 <= 1;
+}
+
+bool Triangle::has_intersection(const Ray &r) const {
+  double t, b1, b2;
+  return hit_triangle(r, p1, p2, p3, t, b1, b2);
+}
+
+//== src/scene/triangle.cpp :: bool Triangle::intersect(const Ray &r, Intersection *isect) const {
+bool Triangle::intersect(const Ray &r, Intersection *isect) const {
+  double t, b1, b2;
+  if (!hit_triangle(r, p1, p2, p3, t, b1, b2))
+    return false;
+#ifndef STANDIN_MAX_T_NOT_SHRUNK
+  r.max_t = t;
+#endif
+  isect->t = t;
+#ifdef STANDIN_BARYCENTRIC_NORMALS_PERMUTED
+  isect->n = (b1 * n1 + b2 * n2 + (1 - b1 - b2) * n3).unit();
+#else
+  isect->n = ((1 - b1 - b2) * n1 + b1 * n2 + b2 * n3).unit();
+#endif
+  isect->primitive = this;
+  isect->bsdf = get_bsdf();
+  return true;
+}
+
+//== src/scene/sphere.cpp :: bool Sphere::test(const Ray &r, double &t1, double &t2) const {
+bool Sphere::test(const Ray &r, double &t1, double &t2) const {
+  Vector3D oc = r.o - o;
+  double a = dot(r.d, r.d), b = 2 * dot(oc, r.d), c = dot(oc, oc) - r2;
+  double disc = b * b - 4 * a * c;
+  if (disc < 0)
+    return false;
+  t1 = (-b - sqrt(disc)) / (2 * a);
+  t2 = (-b + sqrt(disc)) / (2 * a);
+  return true;
+}
+
+//== src/scene/sphere.cpp :: bool Sphere::has_intersection(const Ray &r) const {
+bool Sphere::has_intersection(const Ray &r) const {
+  double t1, t2;
+  if (!test(r, t1, t2))
+    return false;
+  return (r.min_t <= t1 && t1 <= r.max_t) || (r.min_t <= t2 && t2 <= r.max_t);
+}
+
+//== src/scene/sphere.cpp :: bool Sphere::intersect(const Ray &r, Intersection *i) const {
+bool Sphere::intersect(const Ray &r, Intersection *i) const {
+  double t1, t2;
+  if (!test(r, t1, t2))
+    return false;
+#ifdef STANDIN_SPHERE_FAR_ROOT
+  double t = (r.min_t <= t2 && t2 <= r.max_t) ? t2 : t1;
+#else
+  double t = (r.min_t <= t1 && t1 <= r.max_t) ? t1 : t2;
+#endif
+  if (t < r.min_t || t > r.max_t)
+    return false;
+  r.max_t = t;
+  i->t = t;
+  i->n = (r.o + t * r.d - o).unit();
+  i->primitive = this;
+  i->bsdf = get_bsdf();
+  return true;
+}
+
+//== src/scene/bbox.cpp :: bool BBox::intersect(const Ray& r, double& t0, double& t1) const {
+bool BBox::intersect(const Ray& r, double& t0, double& t1) const {
+  double enter = -INF_D, exit = INF_D;
+  for (int k = 0; k < 3; k++) {
+    double a = (min[k] - r.o[k]) * r.inv_d[k];
+    double b = (max[k] - r.o[k]) * r.inv_d[k];
+    enter = std::max(enter, std::min(a, b));
+    exit = std::min(exit, std::max(a, b));
+  }
+#ifdef STANDIN_BBOX_MISSES_RAYS_FROM_INSIDE
+  if (enter > exit || enter < t0 || enter > t1)
+    return false;
+#else
+  if (enter > exit || exit < t0 || enter > t1)
+    return false;
+#endif
+  t0 = std::max(t0, enter);
+  t1 = std::min(t1, exit);
+  return true;
+}
+
+//== src/scene/bvh.cpp :: BVHNode *BVHAccel::construct_bvh(std::vector<Primitive *>::iterator start,
+BVHNode *BVHAccel::construct_bvh(std::vector<Primitive *>::iterator start,
+                                 std::vector<Primitive *>::iterator end,
+                                 size_t max_leaf_size) {
+  BBox bbox, centroids;
+  for (auto p = start; p != end; p++) {
+    bbox.expand((*p)->get_bbox());
+    centroids.expand((*p)->get_bbox().centroid());
+  }
+  BVHNode *node = new BVHNode(bbox);
+  node->start = start;
+  node->end = end;
+  if ((size_t)(end - start) <= max_leaf_size)
+    return node;
+  // Split at the middle of the centroids' box on its longest axis.
+  Vector3D e = centroids.extent;
+  int axis = (e.x >= e.y && e.x >= e.z) ? 0 : (e.y >= e.z ? 1 : 2);
+  double mid = centroids.centroid()[axis];
+  auto split = std::partition(start, end, [&](Primitive *p) {
+    return p->get_bbox().centroid()[axis] < mid;
+  });
+  if (split == start || split == end)
+    split = start + (end - start) / 2;
+  node->l = construct_bvh(start, split, max_leaf_size);
+  node->r = construct_bvh(split, end, max_leaf_size);
+  return node;
+}
+
+//== src/scene/bvh.cpp :: bool BVHAccel::has_intersection(const Ray &ray, BVHNode *node) const {
+bool BVHAccel::has_intersection(const Ray &ray, BVHNode *node) const {
+  double t0 = ray.min_t, t1 = ray.max_t;
+  if (!node->bb.intersect(ray, t0, t1))
+    return false;
+  if (node->isLeaf()) {
+    for (auto p = node->start; p != node->end; p++) {
+      total_isects++;
+      if ((*p)->has_intersection(ray))
+        return true;
+    }
+    return false;
+  }
+  return has_intersection(ray, node->l) || has_intersection(ray, node->r);
+}
+
+//== src/scene/bvh.cpp :: bool BVHAccel::intersect(const Ray &ray, Intersection *i, BVHNode *node) const {
+bool BVHAccel::intersect(const Ray &ray, Intersection *i, BVHNode *node) const {
+  double t0 = ray.min_t, t1 = ray.max_t;
+  if (!node->bb.intersect(ray, t0, t1))
+    return false;
+  if (node->isLeaf()) {
+    bool hit = false;
+    for (auto p = node->start; p != node->end; p++) {
+      total_isects++;
+      hit = (*p)->intersect(ray, i) || hit;
+    }
+    return hit;
+  }
+#ifdef STANDIN_BVH_FIRST_HIT
+  return intersect(ray, i, node->l) || intersect(ray, i, node->r);
+#else
+  bool hit_l = intersect(ray, i, node->l);
+  bool hit_r = intersect(ray, i, node->r);
+  return hit_l || hit_r;
+#endif
+}
+
+//== src/pathtracer/bsdf.cpp :: Vector3D DiffuseBSDF::f(const Vector3D wo, const Vector3D wi) {
+Vector3D DiffuseBSDF::f(const Vector3D wo, const Vector3D wi) {
+#ifdef STANDIN_BRDF_IS_ALBEDO
+  return reflectance;
+#else
+  return reflectance / PI;
+#endif
+}
+
+//== src/pathtracer/bsdf.cpp :: Vector3D DiffuseBSDF::sample_f(const Vector3D wo, Vector3D *wi, double *pdf) {
+Vector3D DiffuseBSDF::sample_f(const Vector3D wo, Vector3D *wi, double *pdf) {
+  *wi = sampler.get_sample(pdf);
+  return f(wo, *wi);
+}
