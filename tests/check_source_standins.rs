@@ -29,6 +29,7 @@ const STANDINS: Standins = Standins {
     functions: include_str!("check_source_standins/functions.cpp"),
     parts: &[1, 2, 3],
     prelude: "",
+    samplers: &["DiffuseBSDF::sample_f"],
 };
 
 #[test]

@@ -30,6 +30,7 @@ const STANDINS: Standins = Standins {
     functions: include_str!("check_source_standins_32/functions.cpp"),
     parts: &[6, 7, 8],
     prelude: "#include <algorithm>\n",
+    samplers: &["MicrofacetBSDF::sample_f", "EnvironmentLight::sample_L"],
 };
 
 #[test]

@@ -28,6 +28,9 @@ pub struct Standins {
     pub parts: &'static [u8],
     /// Lines put at the top of every changed file, before the header.
     pub prelude: &'static str,
+    /// The samplers among the functions: with no mistake, the report
+    /// shows each one's warptest picture.
+    pub samplers: &'static [&'static str],
 }
 
 /// One row of the summary table: function, verdict, likely mistake.
@@ -86,6 +89,15 @@ impl Standins {
     /// (none: all correct): the exit code, the table's rows and standard
     /// output; `None` without the starters.
     pub fn check(&self, mistake: Option<&str>) -> Option<(Option<i32>, Vec<Row>, String)> {
+        self.check_in(mistake).map(|(run, _)| run)
+    }
+
+    /// [`Standins::check`] and `check`'s output folder.
+    #[allow(clippy::type_complexity)]
+    fn check_in(
+        &self,
+        mistake: Option<&str>,
+    ) -> Option<((Option<i32>, Vec<Row>, String), PathBuf)> {
         static TREES: Mutex<Vec<(&'static str, PathBuf)>> = Mutex::new(Vec::new());
         let dir = starter_dir()?;
         // One build at a time: the lock is held to the end.
@@ -117,7 +129,7 @@ impl Standins {
             .into_iter()
             .map(|r| (r.function, r.verdict, r.mistake))
             .collect();
-        Some((run.status.code(), rows, stdout))
+        Some(((run.status.code(), rows, stdout), out))
     }
 
     /// How many probes the parts have.
@@ -128,9 +140,10 @@ impl Standins {
             .count()
     }
 
-    /// With no mistake every probe passes and `check` exits with 0.
+    /// With no mistake every probe passes, `check` exits with 0, and the
+    /// report shows the warptest picture of each sampler in its section.
     pub fn all_pass(&self) {
-        let Some((code, rows, stdout)) = self.check(None) else {
+        let Some(((code, rows, stdout), out)) = self.check_in(None) else {
             return;
         };
         assert_eq!(rows.len(), self.probes(), "{stdout}");
@@ -138,6 +151,19 @@ impl Standins {
             assert_eq!(verdict, "pass", "{function}:\n{stdout}");
         }
         assert_eq!(code, Some(0), "{stdout}");
+        let report = std::fs::read_to_string(out.join("report.html")).unwrap();
+        let sections: Vec<&str> = report.split("<section").skip(1).collect();
+        assert_eq!(sections.len(), self.probes());
+        for (probe, section) in PROBES
+            .iter()
+            .filter(|p| self.parts.contains(&p.part))
+            .zip(&sections)
+        {
+            assert!(section.contains(probe.function), "{section}");
+            let pictured = section.contains(r#"alt="warptest" src="data:image/png;base64,"#);
+            let sampler = self.samplers.contains(&probe.function);
+            assert_eq!(pictured, sampler, "{}", probe.function);
+        }
     }
 
     /// With `mistake` in the functions `wrong`: those fail naming it,

@@ -36,6 +36,7 @@ pub fn build_driver(source: &Path, out: &Path, jobs: u16) -> Result<PathBuf, Str
     write_if_changed(&driver, DRIVER_CPP)?;
     write_if_changed(&hook, PROBE_CMAKE)?;
     let build = dir.join("build");
+    forget_another_tree(&build, &source)?;
     let configure = [
         "-S".into(),
         source.display().to_string(),
@@ -77,6 +78,22 @@ fn write_if_changed(path: &Path, text: &str) -> Result<(), String> {
         return Ok(());
     }
     std::fs::write(path, text).map_err(|e| format!("{}: {e}", path.display()))
+}
+
+/// Removes the build folder when CMake configured it for another tree
+/// (an `--out` used before with another `--source`), which CMake would
+/// refuse to configure again.
+fn forget_another_tree(build: &Path, source: &Path) -> Result<(), String> {
+    let Ok(cache) = std::fs::read_to_string(build.join("CMakeCache.txt")) else {
+        return Ok(());
+    };
+    let home = cache
+        .lines()
+        .find_map(|l| l.strip_prefix("CMAKE_HOME_DIRECTORY:INTERNAL="));
+    if home.is_some_and(|h| Path::new(h) == source) {
+        return Ok(());
+    }
+    std::fs::remove_dir_all(build).map_err(|e| format!("{}: {e}", build.display()))
 }
 
 /// Runs `cmake args`, its output kept in `log`; on failure the step, the
@@ -134,6 +151,22 @@ mod tests {
             first_error("make: *** [all] Error 2\n\n"),
             "make: *** [all] Error 2"
         );
+    }
+
+    /// A build folder of another tree goes; one of this tree stays.
+    #[test]
+    fn a_build_of_another_tree_is_forgotten() {
+        let build = std::env::temp_dir().join("cs184-probe-other-tree");
+        std::fs::create_dir_all(&build).unwrap();
+        let cache = |home: &str| {
+            let text = format!("# cache\nCMAKE_HOME_DIRECTORY:INTERNAL={home}\n");
+            std::fs::write(build.join("CMakeCache.txt"), text).unwrap();
+        };
+        cache("/students/mine");
+        forget_another_tree(&build, Path::new("/students/mine")).unwrap();
+        assert!(build.join("CMakeCache.txt").is_file());
+        forget_another_tree(&build, Path::new("/students/theirs")).unwrap();
+        assert!(!build.exists());
     }
 
     #[test]

@@ -200,7 +200,11 @@ fn distribution(driver: &Driver, input: &str, samples: &[(DVec3, f64, DVec3)]) -
             None,
         ));
     }
-    picture::save(&driver.work, "DiffuseBSDF::sample_f", &hist);
+    picture::save(
+        &driver.work,
+        "DiffuseBSDF::sample_f",
+        &picture::hemisphere(&hist),
+    );
     let (stat, dof, pass) = warp::chi_square(&hist, ALPHA);
     if !pass {
         return Verdict::Fail(failure(

@@ -26,6 +26,7 @@ use super::environment::{flip_words, flipped};
 use super::envmap::{self, candidates, lookup, probabilities, texel, xy, H, W};
 use super::geometry::{num, show, vec_at};
 use super::microfacet::{near, near3};
+use super::picture;
 use super::verdict::{failure, Cases, Failure, Verdict};
 use super::warp::{self, Histogram};
 use crate::mistakes::Mistake;
@@ -88,8 +89,13 @@ pub fn sample_l(driver: &Driver) -> Verdict {
     if !cases.all_pass() {
         return cases.verdict(None);
     }
-    let hist = histogram(&records, &texels, &p);
-    let (stat, dof, pass) = warp::chi_square(&hist, LEVEL);
+    let counts = texel_counts(&texels, &p);
+    picture::save(
+        &driver.work,
+        "EnvironmentLight::sample_L",
+        &picture::texels(&counts, W, H),
+    );
+    let (stat, dof, pass) = warp::chi_square(&pooled(&records, &counts), LEVEL);
     if !pass {
         return Verdict::Fail(failure(
             input,
@@ -205,14 +211,22 @@ fn judge(s: &LightSample, p: &[f64]) -> Result<(usize, usize), Failure> {
 }
 
 /// The directions' texels against their probabilities, each texel a
-/// cell; a pole's row one cell when a direction lies on that pole.
-fn histogram(records: &[LightSample], texels: &[(usize, usize)], p: &[f64]) -> Histogram {
-    let n = records.len() as f64;
+/// cell, row by row.
+fn texel_counts(texels: &[(usize, usize)], p: &[f64]) -> Histogram {
     let mut observed = vec![0.0; W * H];
     for &(i, j) in texels {
         observed[j * W + i] += 1.0;
     }
-    let expected: Vec<f64> = p.iter().map(|q| n * q).collect();
+    let n = texels.len() as f64;
+    Histogram {
+        observed,
+        expected: p.iter().map(|q| n * q).collect(),
+    }
+}
+
+/// `counts` ([`texel_counts`]) with a pole's row one cell when a
+/// direction lies on that pole (its column is lost there).
+fn pooled(records: &[LightSample], counts: &Histogram) -> Histogram {
     let pooled: Vec<usize> = [0, H - 1]
         .into_iter()
         .filter(|&j| {
@@ -227,12 +241,13 @@ fn histogram(records: &[LightSample], texels: &[(usize, usize)], p: &[f64]) -> H
     };
     for j in 0..H {
         let row = j * W..(j + 1) * W;
+        let (o, e) = (&counts.observed[row.clone()], &counts.expected[row]);
         if pooled.contains(&j) {
-            h.observed.push(observed[row.clone()].iter().sum());
-            h.expected.push(expected[row].iter().sum());
+            h.observed.push(o.iter().sum());
+            h.expected.push(e.iter().sum());
         } else {
-            h.observed.extend(&observed[row.clone()]);
-            h.expected.extend(&expected[row]);
+            h.observed.extend(o);
+            h.expected.extend(e);
         }
     }
     h

@@ -21,6 +21,7 @@ use super::density;
 use super::driver::Driver;
 use super::geometry::{num, show, tokens, vec_at};
 use super::microfacet::{beckmann, near, near3, ETA, K};
+use super::picture;
 use super::reflection::polar;
 use super::specular::{said, samples, Sample};
 use super::verdict::{failure, Cases, Verdict};
@@ -115,6 +116,11 @@ pub fn sample_f(driver: &Driver) -> Verdict {
     }
     let dirs: Vec<DVec3> = all.iter().map(|s| s.wi).collect();
     let hist = density::histogram(&dirs, &density::cell_masses(|wi| pdf(wo, wi, ALPHA)));
+    picture::save(
+        &driver.work,
+        "MicrofacetBSDF::sample_f",
+        &picture::hemisphere(&hist),
+    );
     let (stat, dof, pass) = warp::chi_square(&hist, LEVEL);
     let below = all.iter().filter(|s| s.wi.z <= 0.0).count();
     if !pass {

@@ -115,7 +115,7 @@ fn one(i: usize, r: &ProbeResult, runs: &Path) -> String {
         let rgb = image.to_rgb8();
         let _ = write!(
             html,
-            r#"<figure style="width:auto"><img alt="warptest" src="{}"/><figcaption>Your directions over the hemisphere (cos theta down from 1, phi across): your histogram, the counts the pdfs you return expect, and their difference in standard errors (blue -4, white 0, red +4).</figcaption></figure>"#,
+            r#"<figure style="width:auto"><img alt="warptest" src="{}"/><figcaption>Your samples: your histogram, the counts the pdfs you return expect, and their difference in standard errors (blue -4, white 0, red +4); a BSDF's over the hemisphere (cos theta down from 1, phi across), the environment light's over the map's texels.</figcaption></figure>"#,
             data_uri(rgb.width(), rgb.height(), rgb.as_raw())
         );
     }
