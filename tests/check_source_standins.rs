@@ -12,7 +12,10 @@
 //! - with each mistake, the function it is in fails, the table's "likely
 //!   mistake" column names it, every function it does not touch (and that
 //!   does not call a function it is in) still passes, and `check` exits
-//!   with 1.
+//!   with 1;
+//! - a slip the catalogue does not hold, a traversal that tests no node's
+//!   box (its answers right, its work a scan's), fails its function on
+//!   the race on the course's bunny and names no mistake.
 //!
 //! Without the variable the tests skip with a line, except under
 //! `CI=true`, where they fail.
@@ -50,4 +53,9 @@ standin_mistakes! {
     bbox_misses_rays_from_inside: "bbox-misses-rays-from-inside" in "BBox::intersect";
     bvh_first_hit: "bvh-first-hit" in "BVHAccel::intersect";
     brdf_is_albedo: "brdf-is-albedo" in "DiffuseBSDF::f";
+}
+
+#[test]
+fn a_traversal_that_tests_no_box_fails_the_race() {
+    STANDINS.a_slip_fails("bvh-no-box-test", &["BVHAccel::intersect"]);
 }

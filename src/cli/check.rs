@@ -85,7 +85,13 @@ pub fn check(args: &CheckArgs) -> Result<ExitCode, Box<dyn Error>> {
             "building the probe against {} (its first build takes a few minutes)",
             source.display()
         );
-        probed = probe::run(source, &args.out, &args.parts, args.threads)?;
+        probed = probe::run(
+            source,
+            args.scenes.as_deref(),
+            &args.out,
+            &args.parts,
+            args.threads,
+        )?;
         crate::cli::say::text(&probe::table(&probed))?;
         crate::cli::say::text(&probe::details(&probed))?;
     }

@@ -175,8 +175,10 @@ bool BVHAccel::has_intersection(const Ray &ray, BVHNode *node) const {
 //== src/scene/bvh.cpp :: bool BVHAccel::intersect(const Ray &ray, Intersection *i, BVHNode *node) const {
 bool BVHAccel::intersect(const Ray &ray, Intersection *i, BVHNode *node) const {
   double t0 = ray.min_t, t1 = ray.max_t;
+#ifndef STANDIN_BVH_NO_BOX_TEST
   if (!node->bb.intersect(ray, t0, t1))
     return false;
+#endif
   if (node->isLeaf()) {
     bool hit = false;
     for (auto p = node->start; p != node->end; p++) {

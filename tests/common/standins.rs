@@ -169,7 +169,21 @@ impl Standins {
     /// With `mistake` in the functions `wrong`: those fail naming it,
     /// those that call none of them pass, and `check` exits with 1.
     pub fn a_mistake_is_named(&self, mistake: &str, wrong: &[&str]) {
-        let Some((code, rows, stdout)) = self.check(Some(mistake)) else {
+        self.fails(mistake, mistake, wrong);
+    }
+
+    /// As [`Standins::a_mistake_is_named`] for a slip the catalogue does
+    /// not hold: the functions `wrong` fail and name no mistake.
+    pub fn a_slip_fails(&self, slip: &str, wrong: &[&str]) {
+        self.fails(slip, "-", wrong);
+    }
+
+    /// With the stand-ins' switch `define` on, the functions `wrong` fail
+    /// with `named` in the "likely mistake" column, those that call none
+    /// of them pass, and `check` exits with 1.
+    fn fails(&self, define: &str, named: &str, wrong: &[&str]) {
+        let mistake = define;
+        let Some((code, rows, stdout)) = self.check(Some(define)) else {
             return;
         };
         assert_eq!(rows.len(), self.probes(), "{mistake}:\n{stdout}");
@@ -181,11 +195,11 @@ impl Standins {
                 touched.push(p.function);
             }
         }
-        for (function, verdict, named) in &rows {
+        for (function, verdict, found) in &rows {
             if wrong.contains(&function.as_str()) {
                 assert_eq!(
-                    (verdict.as_str(), named.as_str()),
-                    ("FAIL", mistake),
+                    (verdict.as_str(), found.as_str()),
+                    ("FAIL", named),
                     "{mistake}, {function}:\n{stdout}"
                 );
             } else if !touched.contains(&function.as_str()) {

@@ -16,6 +16,7 @@
 //
 // Plain C++11 (the course compiles with -std=c++11).
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -58,6 +59,29 @@ template <BVHPrimitivesMember M> struct BVHPrimitivesAccess {
   friend BVHPrimitivesMember bvh_primitives_member() { return M; }
 };
 template struct BVHPrimitivesAccess<&BVHAccel::primitives>;
+
+// Triangle tests: every outermost call of a driver-made triangle's
+// `intersect` or `has_intersection` (a student's `intersect` that calls
+// its own `has_intersection` counts once), so that a BVH's work per ray can
+// be told from a scan's.
+static long long triangle_tests = 0;
+
+struct CountingTriangle : public Triangle {
+  mutable int depth;
+  CountingTriangle() : depth(0) {}
+  bool has_intersection(const Ray& r) const {
+    if (depth++ == 0) ++triangle_tests;
+    bool hit = Triangle::has_intersection(r);
+    --depth;
+    return hit;
+  }
+  bool intersect(const Ray& r, Intersection* i) const {
+    if (depth++ == 0) ++triangle_tests;
+    bool hit = Triangle::intersect(r, i);
+    --depth;
+    return hit;
+  }
+};
 
 // ---------------------------------------------------------------- input
 
@@ -160,6 +184,7 @@ struct State {
   Triangle* triangle;
   Sphere* sphere;
   std::vector<Primitive*> mesh;  // Triangles
+  std::vector<Ray> race;         // The rays `race` times
   std::map<const Primitive*, long long> mesh_position;
   BVHAccel* bvh;
   BSDF* bsdf;
@@ -199,7 +224,7 @@ static Triangle* read_triangle(Args& a) {
   Vector3D p1 = a.vec(), p2 = a.vec(), p3 = a.vec();
   Vector3D n1 = a.vec(), n2 = a.vec(), n3 = a.vec();
   a.done();
-  Triangle* t = new Triangle();
+  Triangle* t = new CountingTriangle();
   t->p1 = p1; t->p2 = p2; t->p3 = p3;
   t->n1 = n1; t->n2 = n2; t->n3 = n3;
   t->bsdf = &tag_bsdf;
@@ -249,6 +274,41 @@ static void set_bsdf(State& st, BSDF* b, MicrofacetBSDF* m, Reply& out) {
   st.bsdf = b;
   st.microfacet = m;
   out.word("ok");
+}
+
+static double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+// The seconds one pass over the race's rays takes: through the BVH
+// (passes repeated until they last 0.05 s, their mean), and through a scan
+// of every triangle (one pass).
+static void race(State& st, bool nearest, Reply& out) {
+  BVHAccel* bvh = need(st.bvh, "bvh");
+  long long passes = 0;
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+  double bvh_seconds = 0;
+  do {
+    for (size_t k = 0; k < st.race.size(); ++k) {
+      Ray r = st.race[k];
+      Intersection isect = fresh_intersection();
+      if (nearest) bvh->intersect(r, &isect);
+      else bvh->has_intersection(r);
+    }
+    ++passes;
+    bvh_seconds = seconds_since(start);
+  } while (bvh_seconds < 0.05 && passes < 1000000);
+  start = std::chrono::steady_clock::now();
+  for (size_t k = 0; k < st.race.size(); ++k) {
+    Ray r = st.race[k];
+    Intersection isect = fresh_intersection();
+    for (size_t i = 0; i < st.mesh.size(); ++i) {
+      if (nearest) st.mesh[i]->intersect(r, &isect);
+      else if (st.mesh[i]->has_intersection(r)) break;
+    }
+  }
+  out.num(bvh_seconds / passes).num(seconds_since(start));
 }
 
 // ---------------------------------------------------------------- commands
@@ -352,6 +412,7 @@ static void run(State& st, Args& a, Reply& out) {
     a.done();
     st.mesh.clear();
     st.mesh_position.clear();
+    st.race.clear();
     st.bvh = NULL;
     out.word("ok");
   } else if (c == "mesh_tri") {
@@ -376,6 +437,20 @@ static void run(State& st, Args& a, Reply& out) {
     a.done();
     bool hit = need(st.bvh, "bvh")->has_intersection(r);
     out.flag(hit).num(r.max_t);
+  } else if (c == "tests") {
+    a.done();
+    out.integer(triangle_tests);
+    triangle_tests = 0;
+  } else if (c == "race_ray") {
+    st.race.push_back(a.ray());
+    a.done();
+    out.word("ok");
+  } else if (c == "race") {
+    const std::string& how = a.word("hit or any");
+    a.done();
+    if (how != "hit" && how != "any") throw BadCommand("race: hit or any");
+    race(st, how == "hit", out);
+    triangle_tests = 0;
   } else if (c == "bvh_hit_at" || c == "bvh_any_at") {
     // The node reached from the root by a word of `l` and `r` (`-`: the
     // root), then the overload that takes a node.

@@ -21,6 +21,9 @@ pub struct Driver {
     pub work: PathBuf,
     /// How long one script may run.
     pub timeout: Duration,
+    /// The folders searched for the course's scenes: the BVH probes race
+    /// on its bunny ([`bvh_race`](super::bvh_race)).
+    pub scenes: Vec<PathBuf>,
 }
 
 /// How a run ended early, at the command [`Transcript::commands`]`[at]`.

@@ -17,7 +17,8 @@
 //!   `has_intersection` and `Sphere::test`;
 //! - [`bbox`] tests `BBox::intersect`;
 //! - [`bvh_tree`]: `BVHAccel::construct_bvh` by its tree; [`bvh`](mod@bvh):
-//!   `intersect` and `has_intersection` against a scan of every triangle;
+//!   `intersect` and `has_intersection` against a scan of every triangle,
+//!   then on the course's bunny, their work per ray ([`bvh_race`]);
 //! - [`diffuse`]: `DiffuseBSDF::f` and `sample_f`, its directions by
 //!   [`warp`]'s chi-square test against the pdfs it returns;
 //! - [`reflection`]: `BSDF::reflect` and `BSDF::refract`; [`specular`]:
@@ -33,6 +34,7 @@
 pub mod bbox;
 pub mod build;
 pub mod bvh;
+pub mod bvh_race;
 pub mod bvh_tree;
 pub mod camera;
 pub mod conductor;
@@ -265,15 +267,30 @@ pub struct ProbeResult {
 }
 
 /// Builds the driver against the tree at `source` (in `out/probe`) and
-/// runs the probes of `parts` (all when empty). An error only when the
-/// driver cannot be built: the step, the compiler's first error and its
-/// file.
-pub fn run(source: &Path, out: &Path, parts: &[u8], jobs: u16) -> Result<Vec<ProbeResult>, String> {
+/// runs the probes of `parts` (all when empty), the course's scenes looked
+/// for in `scenes`, the tree's `dae/`, then where `CS184_SCENES` says. An
+/// error only when the driver cannot be built: the step, the compiler's
+/// first error and its file.
+pub fn run(
+    source: &Path,
+    scenes: Option<&Path>,
+    out: &Path,
+    parts: &[u8],
+    jobs: u16,
+) -> Result<Vec<ProbeResult>, String> {
     let binary = build::build_driver(source, out, jobs)?;
+    let scenes = scenes
+        .map(Path::to_path_buf)
+        .into_iter()
+        .chain([source.join("dae")])
+        .filter(|d| d.is_dir())
+        .chain(crate::scene::course_files::roots())
+        .collect();
     let driver = Driver {
         binary,
         work: std::path::absolute(out.join("probe").join("runs")).map_err(|e| e.to_string())?,
         timeout: Duration::from_secs(60),
+        scenes,
     };
     // Pictures of an earlier run must not stand for this one's.
     if let Ok(old) = std::fs::read_dir(&driver.work) {
