@@ -215,9 +215,72 @@ pub fn student_cells(image: &StudentImage) -> Vec<f64> {
     cells(image.width, image.height, &image.rgb)
 }
 
+/// The counts a two-sided exact binomial test at level `alpha` accepts
+/// for `n` trials of probability `p`: the least `lo` with
+/// `P(X <= lo) > alpha / 2` and the most `hi` with `P(X >= hi) > alpha /
+/// 2`. Exact (the probabilities summed in log space), so that a correct
+/// sampler fails at most `alpha` of the time, where the normal
+/// approximation's thin tails would fail a small `p` more often.
+pub fn binomial_range(n: u64, p: f64, alpha: f64) -> (u64, u64) {
+    if p <= 0.0 || p >= 1.0 {
+        let k = if p <= 0.0 { 0 } else { n };
+        return (k, k);
+    }
+    // ln P(X = k), by P(k + 1) / P(k) = (n - k) / (k + 1) p / (1 - p).
+    let step = (p / (1.0 - p)).ln();
+    let mut log = vec![n as f64 * (1.0 - p).ln()];
+    for k in 0..n {
+        let next = log[k as usize] + ((n - k) as f64 / (k + 1) as f64).ln() + step;
+        log.push(next);
+    }
+    let top = log.iter().fold(f64::NEG_INFINITY, |a, b| a.max(*b));
+    let pmf: Vec<f64> = log.iter().map(|l| (l - top).exp()).collect();
+    let total: f64 = pmf.iter().sum();
+    let cut = alpha / 2.0 * total;
+    let (mut below, mut lo) = (0.0, 0);
+    for (k, q) in pmf.iter().enumerate() {
+        below += q;
+        if below > cut {
+            lo = k as u64;
+            break;
+        }
+    }
+    let (mut above, mut hi) = (0.0, n);
+    for (k, q) in pmf.iter().enumerate().rev() {
+        above += q;
+        if above > cut {
+            hi = k as u64;
+            break;
+        }
+    }
+    (lo, hi)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The range's ends against statrs's binomial distribution: the tail
+    /// beyond each end is at most `alpha / 2`, and with the end it is more.
+    #[test]
+    fn the_binomial_range_cuts_the_exact_tails() {
+        use statrs::distribution::{Binomial, Discrete, DiscreteCDF};
+        for (n, p) in [(4000u64, 0.04), (2000, 0.43), (4000, 0.5), (50, 0.9)] {
+            let alpha = 1e-5;
+            let (lo, hi) = binomial_range(n, p, alpha);
+            let b = Binomial::new(p, n).unwrap();
+            let upper = |k: u64| 1.0 - b.cdf(k) + b.pmf(k);
+            assert!(lo == 0 || b.cdf(lo - 1) <= alpha / 2.0, "{n} {p} {lo}");
+            assert!(b.cdf(lo) > alpha / 2.0, "{n} {p} {lo}");
+            assert!(
+                hi == n || upper(hi + 1) <= alpha / 2.0 * (1.0 + 1e-9),
+                "{n} {p} {hi}"
+            );
+            assert!(upper(hi) > alpha / 2.0, "{n} {p} {hi}");
+        }
+        assert_eq!(binomial_range(10, 0.0, 1e-5), (0, 0));
+        assert_eq!(binomial_range(10, 1.0, 1e-5), (10, 10));
+    }
 
     #[test]
     fn quantiles_match_tables() {

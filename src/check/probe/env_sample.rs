@@ -31,8 +31,9 @@ use super::verdict::{failure, Cases, Failure, Verdict};
 use super::warp::{self, Histogram};
 use crate::mistakes::Mistake;
 
-const SAMPLES: usize = 20_000;
-const LEVEL: f64 = 1e-5;
+/// The samples the chi-square test takes, and its level.
+pub const SAMPLES: usize = 20_000;
+pub const LEVEL: f64 = 1e-5;
 
 /// One record of `env_sample`.
 struct LightSample {
@@ -212,7 +213,7 @@ fn judge(s: &LightSample, p: &[f64]) -> Result<(usize, usize), Failure> {
 
 /// The directions' texels against their probabilities, each texel a
 /// cell, row by row.
-fn texel_counts(texels: &[(usize, usize)], p: &[f64]) -> Histogram {
+pub fn texel_counts(texels: &[(usize, usize)], p: &[f64]) -> Histogram {
     let mut observed = vec![0.0; W * H];
     for &(i, j) in texels {
         observed[j * W + i] += 1.0;

@@ -21,8 +21,9 @@
 //! Under total internal reflection (`refract` fails) every sample
 //! reflects with `*pdf = 1`, returning `reflectance / |wi.z|`. Over the
 //! samples of one `wo` the count of reflections `k` of `n` must be
-//! binomial with probability `F`: `|k - n F| <= z sqrt(n F (1 - F))` with
-//! `z` the normal quantile of a two-sided test at `alpha` = 1e-5.
+//! binomial with probability `F`: inside the counts an exact two-sided
+//! binomial test at `alpha` = 1e-5 accepts (each tail beyond them at most
+//! `alpha / 2`).
 
 use glam::DVec3;
 
@@ -31,15 +32,37 @@ use super::geometry::{close, num, show, tokens};
 use super::reflection::{eta, polar, reflect, refract, refract_inverted, same, wrong_axis, REL};
 use super::specular::{said, same_colour, samples, stub, transmitted, Sample};
 use super::verdict::{failure, Cases, Verdict};
-use crate::check::stats::normal_upper_quantile;
+use crate::check::stats::binomial_range;
 use crate::mistakes::Mistake;
 
 const TRANSMITTANCE: DVec3 = DVec3::new(0.9, 0.8, 0.7);
 const REFLECTANCE: DVec3 = DVec3::new(0.95, 0.85, 0.6);
-const IOR: f64 = 1.5;
+pub const IOR: f64 = 1.5;
 
 /// The binomial test's level.
-const ALPHA: f64 = 1e-5;
+pub const ALPHA: f64 = 1e-5;
+
+/// The `wo`s the probe samples from and the samples of each: entering at
+/// three angles, leaving below the critical angle (41.8 degrees for ior
+/// 1.5) and beyond it.
+pub fn plan() -> [(DVec3, usize); 7] {
+    [
+        (polar(10.0, 30.0), 4000),
+        (polar(60.0, 200.0), 4000),
+        (polar(80.0, 120.0), 2000),
+        (polar(150.0, 300.0), 4000),
+        (polar(165.0, 20.0), 4000),
+        (polar(130.0, 70.0), 50),
+        (polar(105.0, 250.0), 50),
+    ]
+}
+
+/// Whether `k` reflections of `n` samples are binomial with probability
+/// `f` (an exact two-sided test at [`ALPHA`]), and the counts it accepts.
+pub fn binomial_passes(k: u64, n: u64, f: f64) -> (bool, (u64, u64)) {
+    let (lo, hi) = binomial_range(n, f, ALPHA);
+    ((lo..=hi).contains(&k), (lo, hi))
+}
 
 /// Schlick's `F` at `cos` with `R0 = r0^2`; `r0` the unsquared ratio.
 fn schlick_r0(r0_squared: f64, cos: f64) -> f64 {
@@ -99,17 +122,7 @@ fn wrong_f(wo: DVec3, pdf: f64, reflected: bool) -> (&'static str, Option<Mistak
 
 /// Probes `GlassBSDF::sample_f`.
 pub fn sample_f(driver: &Driver) -> Verdict {
-    // Entering at three angles, leaving below the critical angle (41.8
-    // degrees for ior 1.5) and beyond it; samples per wo.
-    let plan: [(DVec3, usize); 7] = [
-        (polar(10.0, 30.0), 4000),
-        (polar(60.0, 200.0), 4000),
-        (polar(80.0, 120.0), 2000),
-        (polar(150.0, 300.0), 4000),
-        (polar(165.0, 20.0), 4000),
-        (polar(130.0, 70.0), 50),
-        (polar(105.0, 250.0), 50),
-    ];
+    let plan = plan();
     let mut commands = vec![format!(
         "glass {} {} 0 {IOR}",
         tokens(TRANSMITTANCE),
@@ -164,21 +177,18 @@ pub fn sample_f(driver: &Driver) -> Verdict {
         if total_internal || !cases.all_pass() {
             continue;
         }
-        let (k, n) = (reflected as f64, *n as f64);
-        let sd = (n * f * (1.0 - f)).sqrt();
-        let z = normal_upper_quantile(ALPHA / 2.0);
+        let (pass, (lo, hi)) = binomial_passes(reflected as u64, *n as u64, f);
         shares.push(format!("{}/{}", reflected, records.len()));
-        cases.record(((k - n * f).abs() > z * sd).then(|| {
+        cases.record((!pass).then(|| {
             failure(
                 input.clone(),
                 format!(
-                    "about {} reflections (Schlick's F = {}), within {} of it",
-                    num(n * f),
-                    num(f),
-                    num(z * sd)
+                    "about {} reflections (Schlick's F = {}): from {lo} to {hi}",
+                    num(*n as f64 * f),
+                    num(f)
                 ),
                 format!("{reflected} reflections"),
-                "the reflection is not chosen with probability F (a binomial test at alpha 1e-5)",
+                "the reflection is not chosen with probability F (an exact binomial test at alpha 1e-5)",
                 None,
             )
         }));

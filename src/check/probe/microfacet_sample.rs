@@ -28,12 +28,27 @@ use super::verdict::{failure, Cases, Verdict};
 use super::warp;
 use crate::mistakes::Mistake;
 
-const ALPHA: f64 = 0.5;
-const SAMPLES: usize = 20_000;
+/// The lobe's roughness, and the samples the chi-square test takes.
+pub const ALPHA: f64 = 0.5;
+pub const SAMPLES: usize = 20_000;
 /// Samples whose value is compared with the student's `f`.
 const VALUES: usize = 100;
 /// The chi-square test's level.
-const LEVEL: f64 = 1e-5;
+pub const LEVEL: f64 = 1e-5;
+
+/// The `wo` the probe samples from.
+pub fn probe_wo() -> DVec3 {
+    polar(40.0, 30.0)
+}
+
+/// The handout's sample of `wi` from `wo` for the uniform numbers `u1`,
+/// `u2`: the half vector of Beckmann roughness `alpha`, `tan^2 theta_h =
+/// -alpha^2 ln(1 - u1)`, `phi_h = 2 pi u2`, and `wo` reflected about it.
+pub fn handout_sample(wo: DVec3, alpha: f64, u1: f64, u2: f64) -> DVec3 {
+    let theta = (-alpha * alpha * (1.0 - u1).ln()).sqrt().atan();
+    let h = polar(theta.to_degrees(), 360.0 * u2);
+    2.0 * wo.dot(h) * h - wo
+}
 
 /// The course's density of `wi` sampled from `wo` (both unit, `wo`
 /// above the surface), over the whole sphere.
@@ -50,7 +65,7 @@ pub fn pdf(wo: DVec3, wi: DVec3, alpha: f64) -> f64 {
 
 /// Probes `MicrofacetBSDF::sample_f`.
 pub fn sample_f(driver: &Driver) -> Verdict {
-    let wo = polar(40.0, 30.0);
+    let wo = probe_wo();
     let setup = format!("microfacet {} {} {ALPHA}", tokens(ETA), tokens(K));
     let t = match driver.run(
         "microfacet_sample_f",
@@ -193,15 +208,10 @@ mod tests {
     /// (no Jacobian) does not describe them.
     #[test]
     fn the_handouts_sampler_passes_against_its_pdf() {
-        let wo = polar(40.0, 30.0);
+        let wo = probe_wo();
         let mut rng = Pcg64::seed_from_u64(3);
         let dirs: Vec<DVec3> = (0..SAMPLES)
-            .map(|_| {
-                let (u1, u2): (f64, f64) = (rng.gen(), rng.gen());
-                let theta = (-ALPHA * ALPHA * (1.0 - u1).ln()).sqrt().atan();
-                let h = polar(theta.to_degrees(), 360.0 * u2);
-                2.0 * wo.dot(h) * h - wo
-            })
+            .map(|_| handout_sample(wo, ALPHA, rng.gen(), rng.gen()))
             .collect();
         let masses = density::cell_masses(|wi| pdf(wo, wi, ALPHA));
         let below = masses.last().unwrap();
