@@ -13,9 +13,12 @@
 //!   mistake" column names it, every function it does not touch (and that
 //!   does not call a function it is in) still passes, and `check` exits
 //!   with 1;
-//! - a slip the catalogue does not hold, a traversal that tests no node's
-//!   box (its answers right, its work a scan's), fails its function on
-//!   the race on the course's bunny and names no mistake.
+//! - slips the catalogue does not hold fail their function, name no
+//!   mistake and say what is wrong: a traversal that tests no node's box
+//!   (its answers right, its work a scan's, on the course's bunny), a
+//!   triangle test that ignores `max_t` (not a chained comparison, which
+//!   ignores `min_t` too), slabs not swapped where the direction is
+//!   negative, a leaf's loop that stops at its first hit.
 //!
 //! Without the variable the tests skip with a line, except under
 //! `CI=true`, where they fail.
@@ -57,5 +60,36 @@ standin_mistakes! {
 
 #[test]
 fn a_traversal_that_tests_no_box_fails_the_race() {
-    STANDINS.a_slip_fails("bvh-no-box-test", &["BVHAccel::intersect"]);
+    STANDINS.a_slip_fails(
+        "bvh-no-box-test",
+        &["BVHAccel::intersect"],
+        "every ray tests every triangle",
+    );
+}
+
+#[test]
+fn a_triangle_test_that_ignores_max_t_is_not_a_chained_comparison() {
+    STANDINS.a_slip_fails(
+        "triangle-ignores-max-t",
+        &["Triangle::has_intersection", "Triangle::intersect"],
+        "the test ignores max_t",
+    );
+}
+
+#[test]
+fn slabs_not_swapped_are_told_from_rays_inside() {
+    STANDINS.a_slip_fails(
+        "bbox-slabs-not-swapped",
+        &["BBox::intersect"],
+        "must be swapped",
+    );
+}
+
+#[test]
+fn a_leaf_that_stops_at_its_first_hit_is_not_bvh_first_hit() {
+    STANDINS.a_slip_fails(
+        "bvh-leaf-stops-at-first-hit",
+        &["BVHAccel::intersect"],
+        "a farther triangle of the same leaf",
+    );
 }

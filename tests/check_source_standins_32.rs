@@ -13,7 +13,9 @@
 //! - with each mistake, the function it is in fails, the table's "likely
 //!   mistake" column names it, every function it does not touch (and that
 //!   does not call a function it is in) still passes, and `check` exits
-//!   with 1.
+//!   with 1;
+//! - a slip the catalogue does not hold, `init`'s tables without the
+//!   `sin theta` weight, fails `init` and names no mistake.
 //!
 //! Without the variable the tests skip with a line, except under
 //! `CI=true`, where they fail.
@@ -56,4 +58,13 @@ standin_mistakes! {
         in "EnvironmentLight::sample_dir", "EnvironmentLight::sample_L";
     lens_radius_unscaled: "lens-radius-unscaled" in "Camera::generate_ray_for_thin_lens";
     focus_on_a_sphere: "focus-on-a-sphere" in "Camera::generate_ray_for_thin_lens";
+}
+
+#[test]
+fn tables_without_sin_theta_fail_init() {
+    STANDINS.a_slip_fails(
+        "env-init-no-sin",
+        &["EnvironmentLight::init"],
+        "pdf_envmap has no sin theta",
+    );
 }

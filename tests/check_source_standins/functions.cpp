@@ -37,6 +37,8 @@ static bool hit_triangle(const Ray &r, const Vector3D &p1, const Vector3D &p2,
   b2 = dot(s2, r.d) / det;
 #ifdef STANDIN_TRIANGLE_CHAINED_COMPARISON
   bool in_range = r.min_t <= t <= r.max_t;
+#elif defined(STANDIN_TRIANGLE_IGNORES_MAX_T)
+  bool in_range = r.min_t <= t;
 #else
   bool in_range = r.min_t <= t && t <= r.max_t;
 #endif
@@ -113,8 +115,13 @@ bool BBox::intersect(const Ray& r, double& t0, double& t1) const {
   for (int k = 0; k < 3; k++) {
     double a = (min[k] - r.o[k]) * r.inv_d[k];
     double b = (max[k] - r.o[k]) * r.inv_d[k];
+#ifdef STANDIN_BBOX_SLABS_NOT_SWAPPED
+    enter = std::max(enter, a);
+    exit = std::min(exit, b);
+#else
     enter = std::max(enter, std::min(a, b));
     exit = std::min(exit, std::max(a, b));
+#endif
   }
 #ifdef STANDIN_BBOX_MISSES_RAYS_FROM_INSIDE
   if (enter > exit || enter < t0 || enter > t1)
@@ -183,7 +190,11 @@ bool BVHAccel::intersect(const Ray &ray, Intersection *i, BVHNode *node) const {
     bool hit = false;
     for (auto p = node->start; p != node->end; p++) {
       total_isects++;
+#ifdef STANDIN_BVH_LEAF_STOPS_AT_FIRST_HIT
+      hit = hit || (*p)->intersect(ray, i);
+#else
       hit = (*p)->intersect(ray, i) || hit;
+#endif
     }
     return hit;
   }

@@ -158,8 +158,12 @@ void EnvironmentLight::init() {
   double sum = 0;
   for (uint32_t j = 0; j < h; ++j)
     for (uint32_t i = 0; i < w; ++i)
+#ifdef STANDIN_ENV_INIT_NO_SIN
+      sum += pdf_envmap[w * j + i] = envMap->data[w * j + i].illum();
+#else
       sum += pdf_envmap[w * j + i] =
           envMap->data[w * j + i].illum() * sin(PI * (j + .5) / h);
+#endif
   double acc = 0;
   for (uint32_t j = 0; j < h; ++j) {
     double row = 0;

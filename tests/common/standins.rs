@@ -173,19 +173,24 @@ impl Standins {
     }
 
     /// As [`Standins::a_mistake_is_named`] for a slip the catalogue does
-    /// not hold: the functions `wrong` fail and name no mistake.
-    pub fn a_slip_fails(&self, slip: &str, wrong: &[&str]) {
-        self.fails(slip, "-", wrong);
+    /// not hold: the functions `wrong` fail, name no mistake, and the
+    /// first one's failure `says` what is wrong.
+    pub fn a_slip_fails(&self, slip: &str, wrong: &[&str], says: &str) {
+        if let Some(stdout) = self.fails(slip, "-", wrong) {
+            let first = format!("{} (", wrong[0]);
+            let details = stdout.split_once(&first).map_or("", |(_, d)| d);
+            let line = details.lines().next().unwrap_or("");
+            assert!(line.contains(says), "{slip}: {line}\n{stdout}");
+        }
     }
 
     /// With the stand-ins' switch `define` on, the functions `wrong` fail
     /// with `named` in the "likely mistake" column, those that call none
-    /// of them pass, and `check` exits with 1.
-    fn fails(&self, define: &str, named: &str, wrong: &[&str]) {
+    /// of them pass, and `check` exits with 1; its standard output (`None`
+    /// without the starters).
+    fn fails(&self, define: &str, named: &str, wrong: &[&str]) -> Option<String> {
         let mistake = define;
-        let Some((code, rows, stdout)) = self.check(Some(define)) else {
-            return;
-        };
+        let (code, rows, stdout) = self.check(Some(define))?;
         assert_eq!(rows.len(), self.probes(), "{mistake}:\n{stdout}");
         // The functions that call a wrong one, directly or not, may fail
         // (PROBES lists a function after those it needs).
@@ -207,6 +212,7 @@ impl Standins {
             }
         }
         assert_eq!(code, Some(1), "{mistake}:\n{stdout}");
+        Some(stdout)
     }
 }
 

@@ -67,6 +67,19 @@ impl Shot {
         }
     }
 
+    /// Whether the slabs taken without the swap, entered at `min` and left
+    /// at `max` on every axis, leave `[t0, t1]` outside the box: what
+    /// an intersect that forgets to swap them answers.
+    fn unswapped_misses(&self) -> bool {
+        let (mut enter, mut exit) = (self.t0, self.t1);
+        for axis in 0..3 {
+            let (o, d) = (self.ray.o[axis], self.ray.d[axis]);
+            enter = enter.max((MIN[axis] - o) / d);
+            exit = exit.min((MAX[axis] - o) / d);
+        }
+        enter > exit || enter.is_nan() || exit.is_nan()
+    }
+
     /// Whether the ray's stretch starts inside the box (at `t0` it is
     /// already in: the origin inside, or `t0` past the entry).
     fn starts_inside(&self) -> bool {
@@ -152,6 +165,9 @@ pub fn intersect(driver: &Driver) -> Verdict {
     let mut cases = Cases::default();
     let mut stub_like = true;
     let mut inside_only = true;
+    // Whether every failure is a miss the slabs taken unswapped predict
+    // (a slab's near plane is `max` where the direction is negative).
+    let mut unswapped_only = true;
     for (i, shot) in shots.iter().enumerate() {
         let got = match transcript.exactly(i, 3) {
             Ok(v) => v,
@@ -175,6 +191,7 @@ pub fn intersect(driver: &Driver) -> Verdict {
             }
         };
         inside_only &= !hit && shot.starts_inside();
+        unswapped_only &= !hit && shot.unswapped_misses();
         let (enter, exit) = slab(&shot.ray, MIN, MAX);
         cases.record(Some(failure(
             format!(
@@ -203,6 +220,10 @@ pub fn intersect(driver: &Driver) -> Verdict {
     match cases.verdict(None) {
         Verdict::Fail(mut f) if inside_only => {
             f.mistake = Some(Mistake::BoxMissesRaysFromInside);
+            Verdict::Fail(f)
+        }
+        Verdict::Fail(mut f) if unswapped_only => {
+            f.what = "rays whose direction has a negative component miss the box: where 1/d < 0 a slab is entered at its max plane, so (min - o)/d and (max - o)/d must be swapped".into();
             Verdict::Fail(f)
         }
         v => v,

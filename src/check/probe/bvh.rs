@@ -112,6 +112,7 @@ fn traversal(driver: &Driver, nearest_hit: bool) -> Verdict {
             "construct_bvh builds one leaf, so no traversal can be told from the starter's loop over every primitive".into(),
         );
     }
+    let leaves = bvh_tree::leaf_of(&nodes, mesh.len());
     // The triangles of the root's children, where it has two.
     let sides: Vec<Vec<bool>> = nodes[0]
         .children
@@ -130,6 +131,9 @@ fn traversal(driver: &Driver, nearest_hit: bool) -> Verdict {
     // given: its answers at the root and at both children agree for
     // every ray, which no traversal that uses the node does.
     let mut ignores_node = sides.len() == 2;
+    // The first farther triangle of the nearest one's leaf: it decides
+    // what the failure is, wherever it comes.
+    let mut same_leaf: Option<Failure> = None;
     for (r, ray) in rays.iter().enumerate() {
         let at = mesh.len() + 2 + 3 * r;
         ignores_node &=
@@ -166,7 +170,11 @@ fn traversal(driver: &Driver, nearest_hit: bool) -> Verdict {
                     (f64::NAN, -1)
                 }
             });
-            cases.record(judge(&call, want, found, nearest_hit, side));
+            let failure = judge(&call, want, found, nearest_hit, side, &leaves);
+            if let Some(f) = failure.as_ref().filter(|f| f.what == SAME_LEAF) {
+                same_leaf.get_or_insert_with(|| f.clone());
+            }
+            cases.record(failure);
         }
     }
     if ignores_node {
@@ -175,7 +183,14 @@ fn traversal(driver: &Driver, nearest_hit: bool) -> Verdict {
         );
     }
     if !cases.all_pass() {
-        return cases.verdict(None);
+        return match (cases.verdict(None), same_leaf) {
+            (Verdict::Fail(f), Some(leaf)) => Verdict::Fail(Failure {
+                failed: f.failed,
+                cases: f.cases,
+                ..leaf
+            }),
+            (v, _) => v,
+        };
     }
     match super::bvh_race::race(driver, nearest_hit) {
         Ok(note) => cases.verdict(Some(note)),
@@ -183,14 +198,20 @@ fn traversal(driver: &Driver, nearest_hit: bool) -> Verdict {
     }
 }
 
+/// What a farther triangle of the nearest one's leaf says: only a leaf's
+/// loop that stops at its first hit reports one (a traversal that stops
+/// at its first hit, `bvh-first-hit`, still finds a leaf's nearest).
+const SAME_LEAF: &str = "a farther triangle of the same leaf is reported: the loop over a leaf's primitives stops at its first hit, not its nearest";
+
 /// One answer against the nearest hit (`side` 0: at the root; 1 and 2:
-/// at its children).
+/// at its children); `leaf_of` gives each triangle's leaf.
 pub(super) fn judge(
     call: &str,
     want: Option<(f64, usize)>,
     found: Option<(f64, i64)>,
     nearest_hit: bool,
     side: usize,
+    leaf_of: &[Option<usize>],
 ) -> Option<Failure> {
     let show_hit = |h: Option<(f64, i64)>| {
         h.map_or("a miss".to_owned(), |(t, i)| {
@@ -207,13 +228,22 @@ pub(super) fn judge(
         (None, None) => None,
         (Some(_), Some(_)) if !nearest_hit => None,
         (Some((wt, wi)), Some((t, i))) if i == wi as i64 && close(t, wt, 1e-9) => None,
-        (Some((wt, _)), Some((t, _))) if t > wt => Some(failure(
-            call,
-            expected,
-            got,
-            "a farther triangle is reported, not the nearest",
-            (side == 0).then_some(Mistake::TraversalReturnsFirstHit),
-        )),
+        (Some((wt, wi)), Some((t, i))) if t > wt => {
+            let leaf = |i: usize| leaf_of.get(i).copied().flatten();
+            let one_leaf =
+                usize::try_from(i).is_ok_and(|i| leaf(i).is_some() && leaf(i) == leaf(wi));
+            Some(if one_leaf {
+                failure(call, expected, got, SAME_LEAF, None)
+            } else {
+                failure(
+                    call,
+                    expected,
+                    got,
+                    "a farther triangle is reported, not the nearest",
+                    (side == 0).then_some(Mistake::TraversalReturnsFirstHit),
+                )
+            })
+        }
         (Some(_), None) => Some(failure(
             call,
             expected,

@@ -112,7 +112,8 @@ pub fn race(driver: &Driver, nearest_hit: bool) -> Result<String, Verdict> {
     commands.extend(rays.iter().map(|r| format!("race_ray {}", r.tokens())));
     let how = if nearest_hit { "hit" } else { "any" };
     commands.push(format!("race {how}"));
-    let (t, _) = bvh_tree::run(driver, name, &mesh.triangles, commands)?;
+    let (t, nodes) = bvh_tree::run(driver, name, &mesh.triangles, commands)?;
+    let leaves = bvh_tree::leaf_of(&nodes, mesh.triangles.len());
     let first = mesh.triangles.len() + 3;
     let function = if nearest_hit {
         "intersect"
@@ -134,7 +135,7 @@ pub fn race(driver: &Driver, nearest_hit: bool) -> Result<String, Verdict> {
         };
         let found = (got[0] == 1.0).then(|| (got[1], got.get(2).map_or(-1, |i| *i as i64)));
         let call = format!("{function} on {} with the ray {}", mesh.name, ray.show());
-        cases.record(judge(&call, want, found, nearest_hit, 0));
+        cases.record(judge(&call, want, found, nearest_hit, 0, &leaves));
     }
     if !cases.all_pass() {
         return Err(cases.verdict(None));

@@ -260,6 +260,20 @@ pub(super) fn under(nodes: &[Node], k: usize) -> Vec<usize> {
     }
 }
 
+/// The leaf (by node index) of each of `count` triangles, `None` for a
+/// triangle in no leaf.
+pub(super) fn leaf_of(nodes: &[Node], count: usize) -> Vec<Option<usize>> {
+    let mut out = vec![None; count];
+    for (k, node) in nodes.iter().enumerate() {
+        for &i in node.leaf.iter().flatten() {
+            if let Some(slot) = usize::try_from(i).ok().and_then(|i| out.get_mut(i)) {
+                *slot = Some(k);
+            }
+        }
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -273,6 +287,7 @@ mod tests {
             1.0, 0.5, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0, 1.0,
         ];
         let nodes = parse_tree(&v).unwrap();
+        assert_eq!(leaf_of(&nodes, 4), [Some(1), Some(2), Some(1), None]);
         assert_eq!(nodes.len(), 3);
         assert_eq!(nodes[0].children, vec![1, 2]);
         assert_eq!(nodes[1].leaf, Some(vec![0, 2]));

@@ -60,6 +60,24 @@ template <BVHPrimitivesMember M> struct BVHPrimitivesAccess {
 };
 template struct BVHPrimitivesAccess<&BVHAccel::primitives>;
 
+// Read access, the same way, to the tables EnvironmentLight::init fills.
+typedef double* EnvironmentLight::*EnvTable;
+EnvTable env_pdf_member();
+EnvTable env_marginal_member();
+EnvTable env_conds_member();
+template <EnvTable M> struct EnvPdfAccess {
+  friend EnvTable env_pdf_member() { return M; }
+};
+template <EnvTable M> struct EnvMarginalAccess {
+  friend EnvTable env_marginal_member() { return M; }
+};
+template <EnvTable M> struct EnvCondsAccess {
+  friend EnvTable env_conds_member() { return M; }
+};
+template struct EnvPdfAccess<&EnvironmentLight::pdf_envmap>;
+template struct EnvMarginalAccess<&EnvironmentLight::marginal_y>;
+template struct EnvCondsAccess<&EnvironmentLight::conds_y>;
+
 // Triangle tests: every outermost call of a driver-made triangle's
 // `intersect` or `has_intersection` (a student's `intersect` that calls
 // its own `has_intersection` counts once), so that a BVH's work per ray can
@@ -190,10 +208,11 @@ struct State {
   BSDF* bsdf;
   MicrofacetBSDF* microfacet;  // == bsdf when the current BSDF is one
   EnvironmentLight* env;
+  size_t env_w, env_h;  // its map's size
 
   State() : camera(NULL), lens_set(false), lens_radius(NaN),
             focal_distance(NaN), triangle(NULL), sphere(NULL), bvh(NULL),
-            bsdf(NULL), microfacet(NULL), env(NULL) {}
+            bsdf(NULL), microfacet(NULL), env(NULL), env_w(0), env_h(0) {}
 };
 
 template <typename T> T* need(T* p, const char* what) {
@@ -555,6 +574,8 @@ static void run(State& st, Args& a, Reply& out) {
       for (size_t x = 0; x < w; ++x) map->data[x + y * w] = a.vec();
     a.done();
     st.env = new EnvironmentLight(map);
+    st.env_w = w;
+    st.env_h = h;
     out.word("ok");
   } else if (c == "env_sample") {
     long long n = a.count("sample count", 0, 1000000);
@@ -566,6 +587,17 @@ static void run(State& st, Args& a, Reply& out) {
       Vector3D L = env->sample_L(Vector3D(0), &wi, &dist, &pdf);
       out.vec(wi).num(dist).num(pdf).vec(L);
     }
+  } else if (c == "env_tables") {
+    a.done();
+    EnvironmentLight* env = need(st.env, "envmap");
+    size_t w = st.env_w, h = st.env_h;
+    const double* pdf = env->*env_pdf_member();
+    const double* marginal = env->*env_marginal_member();
+    const double* conds = env->*env_conds_member();
+    if (!pdf || !marginal || !conds) throw BadCommand("env_tables: a table is null");
+    for (size_t k = 0; k < w * h; ++k) out.num(pdf[k]);
+    for (size_t j = 0; j < h; ++j) out.num(marginal[j]);
+    for (size_t k = 0; k < w * h; ++k) out.num(conds[k]);
   } else if (c == "env_dir") {
     Vector3D d = a.vec();
     a.done();

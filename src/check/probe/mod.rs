@@ -27,8 +27,9 @@
 //! - [`microfacet`]: `MicrofacetBSDF::D` and `f`; [`conductor`]: its `F`;
 //!   [`microfacet_sample`]: its `sample_f`, the directions by
 //!   [`density`]'s chi-square test (cells integrated numerically);
-//! - [`environment`]: `EnvironmentLight::sample_dir`, [`env_sample`]: its
-//!   `sample_L`, both on [`envmap`]'s map;
+//! - [`environment`]: `EnvironmentLight::sample_dir`, [`env_init`]: the
+//!   tables its `init` fills, [`env_sample`]: its `sample_L`, all on
+//!   [`envmap`]'s map;
 //! - [`lens`](mod@lens): `Camera::generate_ray_for_thin_lens`.
 
 pub mod bbox;
@@ -41,6 +42,7 @@ pub mod conductor;
 pub mod density;
 pub mod diffuse;
 pub mod driver;
+pub mod env_init;
 pub mod env_sample;
 pub mod environment;
 pub mod envmap;
@@ -242,10 +244,17 @@ pub const PROBES: &[Probe] = &[
         run: environment::sample_dir,
     },
     Probe {
-        function: "EnvironmentLight::sample_L",
+        function: "EnvironmentLight::init",
         file: "src/scene/environment_light.cpp",
         part: 7,
         needs: &[],
+        run: env_init::init,
+    },
+    Probe {
+        function: "EnvironmentLight::sample_L",
+        file: "src/scene/environment_light.cpp",
+        part: 7,
+        needs: &["EnvironmentLight::init"],
         run: env_sample::sample_l,
     },
     Probe {

@@ -207,11 +207,20 @@ fn probe(driver: &Driver, which: Which) -> Verdict {
     };
     let mut cases = Cases::default();
     let mut stub_like = true;
+    // Hits accepted before min_t and past max_t: a chained comparison
+    // accepts both.
+    let (mut before, mut past) = (false, false);
     for ((tri, shot), &i) in shots.iter().zip(&index) {
         let got = match transcript.exactly(i, n) {
             Ok(v) => v,
             Err(stop) => return Verdict::stopped(&stop, transcript.command(i)),
         };
+        if let (true, None, Some((t, ..))) =
+            (got[0] == 1.0, shot.hit, triangle_line(&shot.ray, tri.p))
+        {
+            before |= t < shot.ray.min_t;
+            past |= t > shot.ray.max_t;
+        }
         stub_like &= got[0] == 1.0 && (which == Which::HasIntersection || got[1].is_infinite());
         cases.record(match which {
             Which::Intersect => judge_hit(tri, shot, &got),
@@ -224,7 +233,20 @@ fn probe(driver: &Driver, which: Which) -> Verdict {
                 .into(),
         );
     }
-    cases.verdict(None)
+    match cases.verdict(None) {
+        Verdict::Fail(mut f)
+            if f.mistake == Some(Mistake::TriangleChainedComparison) && !(before && past) =>
+        {
+            f.mistake = None;
+            f.what = if past {
+                "a hit past max_t counts: the test ignores max_t".into()
+            } else {
+                "a hit before min_t counts: the test ignores min_t".into()
+            };
+            Verdict::Fail(f)
+        }
+        v => v,
+    }
 }
 
 /// The input of a case, as a student reads it.
@@ -238,7 +260,8 @@ fn input(call: &str, tri: &Tri, ray: &Ray64) -> String {
     )
 }
 
-/// The mistake of a hit accepted outside `[min_t, max_t]`.
+/// The mistake of a hit accepted outside `[min_t, max_t]` (the probe
+/// keeps it only when hits on both sides are accepted).
 fn out_of_range(shot: &Shot) -> Option<Mistake> {
     (shot.ray.max_t >= 1.0).then_some(Mistake::TriangleChainedComparison)
 }
