@@ -56,6 +56,18 @@ standin_mistakes! {
     bbox_misses_rays_from_inside: "bbox-misses-rays-from-inside" in "BBox::intersect";
     bvh_first_hit: "bvh-first-hit" in "BVHAccel::intersect";
     brdf_is_albedo: "brdf-is-albedo" in "DiffuseBSDF::f";
+    no_cosine: "no-cosine" in "PathTracer::estimate_direct_lighting_hemisphere",
+        "PathTracer::estimate_direct_lighting_importance";
+    no_pdf: "no-pdf" in "PathTracer::estimate_direct_lighting_hemisphere",
+        "PathTracer::estimate_direct_lighting_importance";
+    hemisphere_pdf_1_over_pi: "hemisphere-pdf-1-over-pi"
+        in "PathTracer::estimate_direct_lighting_hemisphere";
+    shadow_acne: "shadow-acne" in "PathTracer::estimate_direct_lighting_importance";
+    shadow_ray_reaches_light: "shadow-ray-reaches-light"
+        in "PathTracer::estimate_direct_lighting_importance";
+    light_from_behind: "light-from-behind" in "PathTracer::estimate_direct_lighting_importance";
+    light_samples_not_averaged: "light-samples-not-averaged"
+        in "PathTracer::estimate_direct_lighting_importance";
 }
 
 #[test]

@@ -221,3 +221,93 @@ Vector3D DiffuseBSDF::sample_f(const Vector3D wo, Vector3D *wi, double *pdf) {
   *wi = sampler.get_sample(pdf);
   return f(wo, *wi);
 }
+
+//== src/pathtracer/pathtracer.cpp :: PathTracer::estimate_direct_lighting_hemisphere(const Ray &r,
+PathTracer::estimate_direct_lighting_hemisphere(const Ray &r,
+                                                const Intersection &isect) {
+  Matrix3x3 o2w;
+  make_coord_space(o2w, isect.n);
+  Matrix3x3 w2o = o2w.T();
+  const Vector3D hit_p = r.o + r.d * isect.t;
+  const Vector3D w_out = w2o * (-r.d);
+  int num_samples = scene->lights.size() * ns_area_light;
+  Vector3D L_out;
+#ifdef STANDIN_HEMISPHERE_PDF_1_OVER_PI
+  double pdf = 1.0 / PI;
+#else
+  double pdf = 1.0 / (2.0 * PI);
+#endif
+  for (int k = 0; k < num_samples; k++) {
+    Vector3D wi = hemisphereSampler->get_sample();
+    Ray shadow(hit_p, o2w * wi);
+    shadow.min_t = EPS_F;
+    Intersection light_isect;
+    if (!bvh->intersect(shadow, &light_isect))
+      continue;
+    Vector3D term = isect.bsdf->f(w_out, wi) * light_isect.bsdf->get_emission();
+#ifndef STANDIN_NO_COSINE
+    term *= wi.z;
+#endif
+#ifndef STANDIN_NO_PDF
+    term /= pdf;
+#endif
+    L_out += term;
+  }
+  return num_samples > 0 ? L_out / (double)num_samples : L_out;
+}
+
+//== src/pathtracer/pathtracer.cpp :: PathTracer::estimate_direct_lighting_importance(const Ray &r,
+PathTracer::estimate_direct_lighting_importance(const Ray &r,
+                                                const Intersection &isect) {
+  Matrix3x3 o2w;
+  make_coord_space(o2w, isect.n);
+  Matrix3x3 w2o = o2w.T();
+  const Vector3D hit_p = r.o + r.d * isect.t;
+  const Vector3D w_out = w2o * (-r.d);
+  Vector3D L_out;
+  for (size_t l = 0; l < scene->lights.size(); l++) {
+    SceneLight *light = scene->lights[l];
+    int ns = light->is_delta_light() ? 1 : (int)ns_area_light;
+    Vector3D sum;
+    for (int k = 0; k < ns; k++) {
+      Vector3D wi_world;
+      double dist, pdf;
+      Vector3D L = light->sample_L(hit_p, &wi_world, &dist, &pdf);
+#ifdef STANDIN_LIGHT_FROM_BEHIND
+      AreaLight *area = dynamic_cast<AreaLight *>(light);
+      if (area && L.x == 0 && L.y == 0 && L.z == 0)
+        L = area->radiance;
+#endif
+      Vector3D wi = w2o * wi_world;
+      if (wi.z <= 0 || !(pdf > 0))
+        continue;
+      Ray shadow(hit_p, wi_world);
+#ifdef STANDIN_SHADOW_ACNE
+      shadow.min_t = 0;
+#else
+      shadow.min_t = EPS_F;
+#endif
+#ifdef STANDIN_SHADOW_RAY_REACHES_LIGHT
+      shadow.max_t = INF_D;
+#else
+      shadow.max_t = dist - EPS_F;
+#endif
+      if (bvh->has_intersection(shadow))
+        continue;
+      Vector3D term = isect.bsdf->f(w_out, wi) * L;
+#ifndef STANDIN_NO_COSINE
+      term *= wi.z;
+#endif
+#ifndef STANDIN_NO_PDF
+      term /= pdf;
+#endif
+      sum += term;
+    }
+#ifdef STANDIN_LIGHT_SAMPLES_NOT_AVERAGED
+    L_out += sum;
+#else
+    L_out += sum / (double)ns;
+#endif
+  }
+  return L_out;
+}

@@ -31,12 +31,15 @@
 #include "pathtracer/bsdf.h"
 #include "pathtracer/camera.h"
 #include "pathtracer/intersection.h"
+#include "pathtracer/pathtracer.h"
 #include "pathtracer/ray.h"
 #include "scene/bbox.h"
 #include "scene/bvh.h"
 #include "scene/collada/camera_info.h"
 #include "scene/environment_light.h"
+#include "scene/light.h"
 #include "scene/object.h"
+#include "scene/scene.h"
 #include "scene/sphere.h"
 #include "scene/triangle.h"
 #include "util/image.h"
@@ -209,10 +212,13 @@ struct State {
   MicrofacetBSDF* microfacet;  // == bsdf when the current BSDF is one
   EnvironmentLight* env;
   size_t env_w, env_h;  // its map's size
+  std::vector<SceneLight*> lights;  // area lights, each also two mesh triangles
+  PathTracer* tracer;
 
   State() : camera(NULL), lens_set(false), lens_radius(NaN),
             focal_distance(NaN), triangle(NULL), sphere(NULL), bvh(NULL),
-            bsdf(NULL), microfacet(NULL), env(NULL), env_w(0), env_h(0) {}
+            bsdf(NULL), microfacet(NULL), env(NULL), env_w(0), env_h(0),
+            tracer(NULL) {}
 };
 
 template <typename T> T* need(T* p, const char* what) {
@@ -285,6 +291,94 @@ static void bvh_reply(Reply& out, const State& st) {
       if (node->l) stack.push_back(node->l);
     }
   }
+}
+
+// The quad of an area light, where the tree's AreaLight makes its own
+// (the 3-2 starter's get_primitives: two triangles emitting
+// radiance / area * max(0, dir . wo)); none in a 3-1 tree.
+template <typename L>
+auto own_quad(const L* light, int) -> decltype(light->get_primitives()) {
+  return light->get_primitives();
+}
+template <typename L>
+std::vector<Primitive*> own_quad(const L*, long) {
+  return std::vector<Primitive*>();
+}
+
+// The 3-1 starter's EmissionBSDF(radiance), glowing both ways; NULL in a
+// tree whose EmissionBSDF takes a direction too (the 3-2 starter's).
+template <typename B>
+auto two_sided_glow(const Vector3D& L, int) -> decltype(new B(L)) {
+  return new B(L);
+}
+template <typename B>
+B* two_sided_glow(const Vector3D&, long) {
+  return NULL;
+}
+
+// An area light as the course's scenes have one: an AreaLight of radiance
+// L at `centre`, spanning `dx` and `dy`, facing `dir`, and its quad in the
+// mesh (what hemisphere sampling meets): the light's own where it makes
+// one (answer 1), else two triangles with an EmissionBSDF(L) (answer 0).
+static void light_quad(State& st, Args& a, Reply& out) {
+  Vector3D L = a.vec(), c = a.vec(), dx = a.vec(), dy = a.vec(), dir = a.vec();
+  a.done();
+  AreaLight* light = new AreaLight(L, c, dir, dx, dy);
+  st.lights.push_back(light);
+  std::vector<Primitive*> own = own_quad(light, 0);
+  if (!own.empty()) {
+    for (size_t k = 0; k < own.size(); ++k) {
+      st.mesh_position[own[k]] = (long long)st.mesh.size();
+      st.mesh.push_back(own[k]);
+    }
+    out.integer(1);
+    return;
+  }
+  BSDF* glow = two_sided_glow<EmissionBSDF>(L, 0);
+  if (!glow) throw BadCommand("light_quad: no EmissionBSDF(radiance) and no get_primitives");
+  Vector3D p[4] = {c - dx * 0.5 - dy * 0.5, c + dx * 0.5 - dy * 0.5,
+                   c + dx * 0.5 + dy * 0.5, c - dx * 0.5 + dy * 0.5};
+  for (int k = 0; k < 2; ++k) {
+    Triangle* t = new CountingTriangle();
+    t->p1 = p[0]; t->p2 = p[k + 1]; t->p3 = p[k + 2];
+    t->n1 = t->n2 = t->n3 = dir;
+    t->bsdf = glow;
+    t->bbox = BBox(t->p1);
+    t->bbox.expand(t->p2);
+    t->bbox.expand(t->p3);
+    st.mesh_position[t] = (long long)st.mesh.size();
+    st.mesh.push_back(t);
+  }
+  out.integer(0);
+}
+
+// One of the direct-lighting estimators called N times at the hit
+// `o + t d` with normal `n` on a DiffuseBSDF(albedo): the mean and the
+// sample variance of its value, per channel (Welford's sums).
+static void direct(State& st, Args& a, Reply& out) {
+  const std::string& which = a.word("hemi or importance");
+  long long n = a.count("call count", 2, 10000000);
+  Vector3D o = a.vec(), d = a.vec();
+  double t = a.num("t");
+  Vector3D normal = a.vec(), albedo = a.vec();
+  a.done();
+  if (which != "hemi" && which != "importance")
+    throw BadCommand("direct: hemi or importance");
+  PathTracer* pt = need(st.tracer, "tracer");
+  Ray r(o, d, (int)pt->max_ray_depth);
+  Intersection isect;
+  isect.t = t;
+  isect.n = normal;
+  isect.bsdf = new DiffuseBSDF(albedo);
+  Vector3D mean, m2;
+  for (long long k = 1; k <= n; ++k) {
+    Vector3D v = which == "hemi" ? pt->estimate_direct_lighting_hemisphere(r, isect)
+                                 : pt->estimate_direct_lighting_importance(r, isect);
+    Vector3D delta = v - mean;
+    mean += delta / (double)k;
+    m2 += delta * (v - mean);
+  }
+  out.vec(mean).vec(m2 / (double)(n - 1));
 }
 
 static void set_bsdf(State& st, BSDF* b, MicrofacetBSDF* m, Reply& out) {
@@ -432,7 +526,9 @@ static void run(State& st, Args& a, Reply& out) {
     st.mesh.clear();
     st.mesh_position.clear();
     st.race.clear();
+    st.lights.clear();
     st.bvh = NULL;
+    st.tracer = NULL;
     out.word("ok");
   } else if (c == "mesh_tri") {
     Triangle* t = read_triangle(a);
@@ -456,6 +552,34 @@ static void run(State& st, Args& a, Reply& out) {
     a.done();
     bool hit = need(st.bvh, "bvh")->has_intersection(r);
     out.flag(hit).num(r.max_t);
+  } else if (c == "light_quad") {
+    light_quad(st, a, out);
+  } else if (c == "light_sample") {
+    Vector3D p = a.vec();
+    long long n = a.count("sample count", 0, 1000000);
+    a.done();
+    if (st.lights.empty()) throw BadCommand("no light yet");
+    for (long long k = 0; k < n; ++k) {
+      Vector3D wi(NaN);
+      double dist = NaN, pdf = NaN;
+      Vector3D L = st.lights.back()->sample_L(p, &wi, &dist, &pdf);
+      out.vec(wi).num(dist).num(pdf).vec(L);
+    }
+  } else if (c == "tracer") {
+    size_t ns = (size_t)a.count("samples a light", 1, 1 << 20);
+    a.done();
+    PathTracer* pt = new PathTracer();
+    pt->bvh = new BVHAccel(st.mesh, 4);
+    pt->scene = new Scene(std::vector<SceneObject*>(), st.lights);
+    pt->ns_area_light = ns;
+    pt->max_ray_depth = 1;
+    pt->direct_hemisphere_sample = false;
+    pt->envLight = NULL;
+    pt->camera = NULL;
+    st.tracer = pt;
+    out.word("ok");
+  } else if (c == "direct") {
+    direct(st, a, out);
   } else if (c == "tests") {
     a.done();
     out.integer(triangle_tests);

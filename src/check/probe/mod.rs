@@ -21,6 +21,8 @@
 //!   then on the course's bunny, their work per ray ([`bvh_race`]);
 //! - [`diffuse`]: `DiffuseBSDF::f` and `sample_f`, its directions by
 //!   [`warp`]'s chi-square test against the pdfs it returns;
+//! - [`direct`]: the two direct-lighting estimators, their means under
+//!   an area light against the light reflected;
 //! - [`reflection`]: `BSDF::reflect` and `BSDF::refract`; [`specular`]:
 //!   `MirrorBSDF::sample_f` and `RefractionBSDF::sample_f`; [`glass`]:
 //!   `GlassBSDF::sample_f`, its choice of lobe by a binomial test;
@@ -41,6 +43,7 @@ pub mod camera;
 pub mod conductor;
 pub mod density;
 pub mod diffuse;
+pub mod direct;
 pub mod driver;
 pub mod env_init;
 pub mod env_sample;
@@ -172,6 +175,24 @@ pub const PROBES: &[Probe] = &[
         part: 3,
         needs: &["DiffuseBSDF::f"],
         run: diffuse::sample_f,
+    },
+    Probe {
+        function: "PathTracer::estimate_direct_lighting_hemisphere",
+        file: "src/pathtracer/pathtracer.cpp",
+        part: 3,
+        needs: &["BVHAccel::intersect", "DiffuseBSDF::f"],
+        run: direct::hemisphere,
+    },
+    Probe {
+        function: "PathTracer::estimate_direct_lighting_importance",
+        file: "src/pathtracer/pathtracer.cpp",
+        part: 3,
+        needs: &[
+            "BVHAccel::intersect",
+            "BVHAccel::has_intersection",
+            "DiffuseBSDF::f",
+        ],
+        run: direct::importance,
     },
     Probe {
         function: "BSDF::reflect",
@@ -342,7 +363,7 @@ pub fn run(
 /// The summary table: part, function, verdict, the likely mistake.
 pub fn table(results: &[ProbeResult]) -> String {
     let mut text = format!(
-        "{:<4} {:<36} {:<8} {}\n",
+        "{:<4} {:<48} {:<8} {}\n",
         "part", "function", "verdict", "likely mistake"
     );
     for r in results {
@@ -351,7 +372,7 @@ pub fn table(results: &[ProbeResult]) -> String {
             _ => "-".to_owned(),
         };
         text.push_str(&format!(
-            "{:<4} {:<36} {:<8} {}\n",
+            "{:<4} {:<48} {:<8} {}\n",
             r.probe.part,
             r.probe.function,
             r.verdict.word(),
