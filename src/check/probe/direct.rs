@@ -34,7 +34,7 @@ use std::f64::consts::PI;
 use glam::DVec3;
 
 use super::driver::Driver;
-use super::geometry::{show, tokens};
+use super::geometry::{num, show, tokens};
 use super::verdict::{failure, Verdict};
 use crate::check::stats::normal_upper_quantile;
 use crate::mistakes::Mistake;
@@ -235,14 +235,21 @@ fn probe(driver: &Driver, which: Estimator) -> Verdict {
             Estimator::Importance => f * integral(*p, |ci, cl, d| ci * cl.max(0.0) / d.powi(k)),
         })
         .collect();
+    let largest = moments
+        .iter()
+        .zip(&right)
+        .map(|(m, r)| score(m, *r))
+        .fold(0.0, f64::max);
     if fits(&moments, &right) {
         return Verdict::Pass {
             cases: CALLS * POINTS.len(),
             note: Some(format!(
-                "means {} on the floor, {} in the air, {} over the light's back, of {CALLS} calls each, as expected{}",
+                "means {} on the floor, {} in the air, {} over the light's back, of {CALLS} calls each, as expected (largest |z| {} of {}){}",
                 show(moments[0].0),
                 show(moments[2].0),
                 show(moments[3].0),
+                num(largest),
+                num(z_critical()),
                 if which == Estimator::Importance && k == 1 {
                     " (with the starter's AreaLight pdf, d / (A cos_l))"
                 } else {
