@@ -1,13 +1,13 @@
 //! `check --source` on real C++ that is wrong in one catalogued way: a
 //! copy of the course's 2025 3-1 starter (`CS184_STARTER_DIR`, copied
-//! under the test's temporary folder) whose functions of parts 1 to 3 are
+//! under the test's temporary folder) whose functions of parts 1 to 4 are
 //! replaced by short, correct stand-ins (`check_source_standins/
 //! functions.cpp`), each catalogued mistake one macro of the header
 //! `src/standin_mistake.h` that the test writes before each build (the
 //! same build folder each time, so a build recompiles only the changed
 //! files). It proves that
 //!
-//! - with no mistake, every probe of parts 1 to 3 passes and `check`
+//! - with no mistake, every probe of parts 1 to 4 passes and `check`
 //!   exits with 0;
 //! - with each mistake, the function it is in fails, the table's "likely
 //!   mistake" column names it, every function it does not touch (and that
@@ -18,7 +18,9 @@
 //!   (its answers right, its work a scan's, on the course's bunny), a
 //!   triangle test that ignores `max_t` (not a chained comparison, which
 //!   ignores `min_t` too), slabs not swapped where the direction is
-//!   negative, a leaf's loop that stops at its first hit.
+//!   negative, a leaf's loop that stops at its first hit;
+//! - `roulette-not-divided` fails its function unnamed: what it makes
+//!   depends on the roulette's schedule, which the probe does not model.
 //!
 //! Without the variable the tests skip with a line, except under
 //! `CI=true`, where they fail.
@@ -33,7 +35,7 @@ use common::Standins;
 const STANDINS: Standins = Standins {
     starter: "p3_1-2025",
     functions: include_str!("check_source_standins/functions.cpp"),
-    parts: &[1, 2, 3],
+    parts: &[1, 2, 3, 4],
     prelude: "",
     samplers: &["DiffuseBSDF::sample_f"],
 };
@@ -68,6 +70,21 @@ standin_mistakes! {
     light_from_behind: "light-from-behind" in "PathTracer::estimate_direct_lighting_importance";
     light_samples_not_averaged: "light-samples-not-averaged"
         in "PathTracer::estimate_direct_lighting_importance";
+    depth_off_by_one: "depth-off-by-one" in "PathTracer::at_least_one_bounce_radiance";
+    emission_every_bounce: "emission-every-bounce"
+        in "PathTracer::at_least_one_bounce_radiance";
+    throughput_without_cos_pdf: "throughput-without-cos-pdf"
+        in "PathTracer::at_least_one_bounce_radiance";
+    o0_accumulates: "o0-accumulates" in "PathTracer::at_least_one_bounce_radiance";
+}
+
+#[test]
+fn roulette_not_divided_fails_its_function() {
+    STANDINS.a_slip_fails(
+        "roulette-not-divided",
+        &["PathTracer::at_least_one_bounce_radiance"],
+        "the bounces do not add up",
+    );
 }
 
 #[test]

@@ -311,3 +311,70 @@ PathTracer::estimate_direct_lighting_importance(const Ray &r,
   }
   return L_out;
 }
+
+//== src/pathtracer/pathtracer.cpp :: Vector3D PathTracer::zero_bounce_radiance(const Ray &r,
+Vector3D PathTracer::zero_bounce_radiance(const Ray &r,
+                                          const Intersection &isect) {
+  return isect.bsdf->get_emission();
+}
+
+//== src/pathtracer/pathtracer.cpp :: Vector3D PathTracer::one_bounce_radiance(const Ray &r,
+Vector3D PathTracer::one_bounce_radiance(const Ray &r,
+                                         const Intersection &isect) {
+  return direct_hemisphere_sample ? estimate_direct_lighting_hemisphere(r, isect)
+                                  : estimate_direct_lighting_importance(r, isect);
+}
+
+//== src/pathtracer/pathtracer.cpp :: Vector3D PathTracer::at_least_one_bounce_radiance(const Ray &r,
+Vector3D PathTracer::at_least_one_bounce_radiance(const Ray &r,
+                                                  const Intersection &isect) {
+  Matrix3x3 o2w;
+  make_coord_space(o2w, isect.n);
+  Matrix3x3 w2o = o2w.T();
+  Vector3D hit_p = r.o + r.d * isect.t;
+  Vector3D w_out = w2o * (-r.d);
+  Vector3D L_out(0, 0, 0);
+#ifdef STANDIN_O0_ACCUMULATES
+  bool accumulate = true;
+#else
+  bool accumulate = isAccumBounces;
+#endif
+  // The camera ray has depth max_ray_depth; the last bounce leaves depth 1.
+#ifdef STANDIN_DEPTH_OFF_BY_ONE
+  int last = 0;
+#else
+  int last = 1;
+#endif
+  int depth = r.depth;
+  if (accumulate || depth == last)
+    L_out = one_bounce_radiance(r, isect);
+  if (depth <= last)
+    return L_out;
+  // Russian roulette from the second bounce on, continuing with 0.65.
+  double q = (int)max_ray_depth - depth + 1 >= 2 ? 0.65 : 1.0;
+  if (!coin_flip(q))
+    return L_out;
+  Vector3D wi;
+  double pdf;
+  Vector3D f = isect.bsdf->sample_f(w_out, &wi, &pdf);
+  if (!(pdf > 0))
+    return L_out;
+  Ray next(hit_p, o2w * wi, depth - 1);
+  next.min_t = EPS_F;
+  Intersection next_isect;
+  if (!bvh->intersect(next, &next_isect))
+    return L_out;
+  Vector3D incoming = at_least_one_bounce_radiance(next, next_isect);
+#ifdef STANDIN_EMISSION_EVERY_BOUNCE
+  incoming += zero_bounce_radiance(next, next_isect);
+#endif
+#ifdef STANDIN_THROUGHPUT_WITHOUT_COS_PDF
+  Vector3D onward = f * incoming;
+#else
+  Vector3D onward = f * incoming * wi.z / pdf;
+#endif
+#ifndef STANDIN_ROULETTE_NOT_DIVIDED
+  onward /= q;
+#endif
+  return accumulate ? L_out + onward : onward;
+}

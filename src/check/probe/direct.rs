@@ -48,7 +48,7 @@ const FACING: DVec3 = DVec3::new(0.0, 0.0, -1.0);
 const ALBEDO: DVec3 = DVec3::new(0.5, 0.6, 0.7);
 /// `ns_area_light`, and the calls at each point.
 const NS: usize = 4;
-const CALLS: usize = 20_000;
+pub(super) const CALLS: usize = 20_000;
 /// The level of the z-tests, over all six.
 const ALPHA: f64 = 1e-6;
 /// Midpoint cells along each side of the light.
@@ -137,7 +137,7 @@ pub fn importance(driver: &Driver) -> Verdict {
 }
 
 /// The mean and variance of the calls at each point.
-type Moments = Vec<(DVec3, DVec3)>;
+pub(super) type Moments = Vec<(DVec3, DVec3)>;
 
 fn probe(driver: &Driver, which: Estimator) -> Verdict {
     let word = match which {
@@ -166,7 +166,7 @@ fn probe(driver: &Driver, which: Estimator) -> Verdict {
             tokens(FACING)
         ),
         format!("light_sample {} 16", tokens(POINTS[1].at)),
-        format!("tracer {NS}"),
+        format!("tracer {NS} 1 0"),
     ]);
     // The first `direct` command's index.
     let first = commands.len();
@@ -368,13 +368,19 @@ fn suspects(
     }
 }
 
-/// The z-test's critical value for each of the six comparisons.
-fn z_critical() -> f64 {
-    normal_upper_quantile(ALPHA / (2.0 * 3.0 * POINTS.len() as f64))
+/// The z-test's critical value for each channel of `points` means.
+pub(super) fn z_critical_of(points: usize) -> f64 {
+    normal_upper_quantile(ALPHA / (2.0 * 3.0 * points as f64))
 }
 
-/// The largest `|z|` of a point's channels against `want`.
-fn score((mean, var): &(DVec3, DVec3), want: DVec3) -> f64 {
+/// [`z_critical_of`] the points here.
+fn z_critical() -> f64 {
+    z_critical_of(POINTS.len())
+}
+
+/// The largest `|z|` of a point's channels against `want`, its mean of
+/// [`CALLS`] calls.
+pub(super) fn score((mean, var): &(DVec3, DVec3), want: DVec3) -> f64 {
     (0..3)
         .map(|c| {
             let se = (var[c] / CALLS as f64).max(0.0).sqrt();
@@ -391,8 +397,8 @@ fn score((mean, var): &(DVec3, DVec3), want: DVec3) -> f64 {
 }
 
 /// Whether every point's mean passes its z-test against `values`.
-fn fits(moments: &Moments, values: &[DVec3]) -> bool {
-    let z = z_critical();
+pub(super) fn fits(moments: &Moments, values: &[DVec3]) -> bool {
+    let z = z_critical_of(moments.len());
     moments.iter().zip(values).all(|(m, v)| score(m, *v) <= z)
 }
 

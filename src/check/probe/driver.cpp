@@ -214,11 +214,12 @@ struct State {
   size_t env_w, env_h;  // its map's size
   std::vector<SceneLight*> lights;  // area lights, each also two mesh triangles
   PathTracer* tracer;
+  BSDF* furnace;                    // the furnace's walls, once built
 
   State() : camera(NULL), lens_set(false), lens_radius(NaN),
             focal_distance(NaN), triangle(NULL), sphere(NULL), bvh(NULL),
             bsdf(NULL), microfacet(NULL), env(NULL), env_w(0), env_h(0),
-            tracer(NULL) {}
+            tracer(NULL), furnace(NULL) {}
 };
 
 template <typename T> T* need(T* p, const char* what) {
@@ -350,6 +351,64 @@ static void light_quad(State& st, Args& a, Reply& out) {
     st.mesh.push_back(t);
   }
   out.integer(0);
+}
+
+// A diffuse surface that also glows, the same in every direction: inside a
+// closed box of it, a path's k-th bounce brings rho^k Le (the furnace
+// test). Both starters' get_emission are overridden (3-1's takes nothing,
+// 3-2's the direction); the other is an unused overload.
+struct FurnaceBSDF : public DiffuseBSDF {
+  Vector3D glow;
+  FurnaceBSDF(const Vector3D& rho, const Vector3D& le) : DiffuseBSDF(rho), glow(le) {}
+  Vector3D get_emission() const { return glow; }
+  Vector3D get_emission(Vector3D) const { return glow; }
+};
+
+// The cube [-1, 1]^3 of FurnaceBSDF(rho, le) walls, normals inward, and an
+// area light outside it, which no ray from inside reaches but which makes
+// the hemisphere estimator take ns_area_light samples.
+static void furnace(State& st, Args& a) {
+  Vector3D rho = a.vec(), le = a.vec();
+  a.done();
+  st.mesh.clear();
+  st.mesh_position.clear();
+  st.lights.clear();
+  st.furnace = new FurnaceBSDF(rho, le);
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int side = -1; side <= 1; side += 2) {
+      Vector3D n(0, 0, 0), u(0, 0, 0), v(0, 0, 0);
+      n[axis] = -side;  // inward
+      u[(axis + 1) % 3] = 1;
+      v[(axis + 2) % 3] = 1;
+      Vector3D c = -n;  // the face's centre, at side along axis
+      Vector3D q[4] = {c - u - v, c + u - v, c + u + v, c - u + v};
+      for (int k = 0; k < 2; ++k) {
+        Triangle* t = new CountingTriangle();
+        t->p1 = q[0]; t->p2 = q[k + 1]; t->p3 = q[k + 2];
+        t->n1 = t->n2 = t->n3 = n;
+        t->bsdf = st.furnace;
+        t->bbox = BBox(t->p1);
+        t->bbox.expand(t->p2);
+        t->bbox.expand(t->p3);
+        st.mesh_position[t] = (long long)st.mesh.size();
+        st.mesh.push_back(t);
+      }
+    }
+  }
+  st.lights.push_back(new AreaLight(Vector3D(1), Vector3D(0, 0, 5), Vector3D(0, 0, -1),
+                                    Vector3D(0.1, 0, 0), Vector3D(0, 0.1, 0)));
+}
+
+// `-o`'s field, where the tree has one (the 2025 starter's isAccumBounces):
+// true when set.
+template <typename P>
+auto set_accumulate(P* pt, bool on, int) -> decltype(pt->isAccumBounces = on, true) {
+  pt->isAccumBounces = on;
+  return true;
+}
+template <typename P>
+bool set_accumulate(P*, bool, long) {
+  return false;
 }
 
 // One of the direct-lighting estimators called N times at the hit
@@ -565,15 +624,44 @@ static void run(State& st, Args& a, Reply& out) {
       Vector3D L = st.lights.back()->sample_L(p, &wi, &dist, &pdf);
       out.vec(wi).num(dist).num(pdf).vec(L);
     }
+  } else if (c == "furnace") {
+    furnace(st, a);
+    out.word("ok");
+  } else if (c == "accumulate") {
+    long long on = a.count("0 or 1", 0, 1);
+    a.done();
+    out.flag(set_accumulate(need(st.tracer, "tracer"), on == 1, 0));
+  } else if (c == "bounces") {
+    long long n = a.count("call count", 2, 10000000);
+    Vector3D o = a.vec(), d = a.vec();
+    double t = a.num("t");
+    Vector3D normal = a.vec();
+    a.done();
+    PathTracer* pt = need(st.tracer, "tracer");
+    Ray r(o, d, (int)pt->max_ray_depth);
+    Intersection isect;
+    isect.t = t;
+    isect.n = normal;
+    isect.bsdf = need(st.furnace, "furnace");
+    Vector3D mean, m2;
+    for (long long k = 1; k <= n; ++k) {
+      Vector3D v = pt->at_least_one_bounce_radiance(r, isect);
+      Vector3D delta = v - mean;
+      mean += delta / (double)k;
+      m2 += delta * (v - mean);
+    }
+    out.vec(mean).vec(m2 / (double)(n - 1));
   } else if (c == "tracer") {
     size_t ns = (size_t)a.count("samples a light", 1, 1 << 20);
+    size_t depth = (size_t)a.count("max ray depth", 0, 1000);
+    long long hemi = a.count("hemisphere 0 or 1", 0, 1);
     a.done();
     PathTracer* pt = new PathTracer();
     pt->bvh = new BVHAccel(st.mesh, 4);
     pt->scene = new Scene(std::vector<SceneObject*>(), st.lights);
     pt->ns_area_light = ns;
-    pt->max_ray_depth = 1;
-    pt->direct_hemisphere_sample = false;
+    pt->max_ray_depth = depth;
+    pt->direct_hemisphere_sample = hemi == 1;
     pt->envLight = NULL;
     pt->camera = NULL;
     st.tracer = pt;

@@ -22,7 +22,8 @@
 //! - [`diffuse`]: `DiffuseBSDF::f` and `sample_f`, its directions by
 //!   [`warp`]'s chi-square test against the pdfs it returns;
 //! - [`direct`]: the two direct-lighting estimators, their means under
-//!   an area light against the light reflected;
+//!   an area light against the light reflected; [`bounces`]:
+//!   `at_least_one_bounce_radiance` in a furnace;
 //! - [`reflection`]: `BSDF::reflect` and `BSDF::refract`; [`specular`]:
 //!   `MirrorBSDF::sample_f` and `RefractionBSDF::sample_f`; [`glass`]:
 //!   `GlassBSDF::sample_f`, its choice of lobe by a binomial test;
@@ -35,6 +36,7 @@
 //! - [`lens`](mod@lens): `Camera::generate_ray_for_thin_lens`.
 
 pub mod bbox;
+pub mod bounces;
 pub mod build;
 pub mod bvh;
 pub mod bvh_race;
@@ -193,6 +195,17 @@ pub const PROBES: &[Probe] = &[
             "DiffuseBSDF::f",
         ],
         run: direct::importance,
+    },
+    Probe {
+        function: "PathTracer::at_least_one_bounce_radiance",
+        file: "src/pathtracer/pathtracer.cpp",
+        part: 4,
+        needs: &[
+            "BVHAccel::intersect",
+            "DiffuseBSDF::sample_f",
+            "PathTracer::estimate_direct_lighting_hemisphere",
+        ],
+        run: bounces::at_least_one_bounce,
     },
     Probe {
         function: "BSDF::reflect",
