@@ -1,13 +1,13 @@
 //! `check --source` on real C++ that is wrong in one catalogued way: a
 //! copy of the course's 2025 3-1 starter (`CS184_STARTER_DIR`, copied
-//! under the test's temporary folder) whose functions of parts 1 to 4 are
+//! under the test's temporary folder) whose functions of parts 1 to 5 are
 //! replaced by short, correct stand-ins (`check_source_standins/
 //! functions.cpp`), each catalogued mistake one macro of the header
 //! `src/standin_mistake.h` that the test writes before each build (the
 //! same build folder each time, so a build recompiles only the changed
 //! files). It proves that
 //!
-//! - with no mistake, every probe of parts 1 to 4 passes and `check`
+//! - with no mistake, every probe of parts 1 to 5 passes and `check`
 //!   exits with 0;
 //! - with each mistake, the function it is in fails, the table's "likely
 //!   mistake" column names it, every function it does not touch (and that
@@ -35,7 +35,7 @@ use common::Standins;
 const STANDINS: Standins = Standins {
     starter: "p3_1-2025",
     functions: include_str!("check_source_standins/functions.cpp"),
-    parts: &[1, 2, 3, 4],
+    parts: &[1, 2, 3, 4, 5],
     prelude: "",
     samplers: &["DiffuseBSDF::sample_f"],
 };
@@ -76,6 +76,7 @@ standin_mistakes! {
     throughput_without_cos_pdf: "throughput-without-cos-pdf"
         in "PathTracer::at_least_one_bounce_radiance";
     o0_accumulates: "o0-accumulates" in "PathTracer::at_least_one_bounce_radiance";
+    adaptive_count_not_updated: "adaptive-count-not-updated" in "PathTracer::raytrace_pixel";
 }
 
 #[test]

@@ -378,3 +378,49 @@ Vector3D PathTracer::at_least_one_bounce_radiance(const Ray &r,
 #endif
   return accumulate ? L_out + onward : onward;
 }
+
+//== src/pathtracer/pathtracer.cpp :: Vector3D PathTracer::est_radiance_global_illumination(const Ray &r) {
+Vector3D PathTracer::est_radiance_global_illumination(const Ray &r) {
+  Intersection isect;
+  Vector3D L_out;
+  if (!bvh->intersect(r, &isect))
+    return envLight ? envLight->sample_dir(r) : L_out;
+  if (isAccumBounces || max_ray_depth == 0)
+    L_out += zero_bounce_radiance(r, isect);
+  if (max_ray_depth >= 1)
+    L_out += at_least_one_bounce_radiance(r, isect);
+  return L_out;
+}
+
+//== src/pathtracer/pathtracer.cpp :: void PathTracer::raytrace_pixel(size_t x, size_t y) {
+void PathTracer::raytrace_pixel(size_t x, size_t y) {
+  int num_samples = ns_aa;
+  Vector2D origin = Vector2D(x, y);
+  double w = sampleBuffer.w, h = sampleBuffer.h;
+  Vector3D sum;
+  double s1 = 0, s2 = 0;
+  int n = 0;
+  while (n < num_samples) {
+    Vector2D p = origin + gridSampler->get_sample();
+    Ray r = camera->generate_ray(p.x / w, p.y / h);
+    r.depth = max_ray_depth;
+    Vector3D L = est_radiance_global_illumination(r);
+    sum += L;
+    s1 += L.illum();
+    s2 += L.illum() * L.illum();
+    n++;
+    if (samplesPerBatch > 0 && n % samplesPerBatch == 0 && n < num_samples) {
+      double mu = s1 / n;
+      double sigma = sqrt(std::max(0.0, (s2 - s1 * s1 / n) / (n - 1)));
+      if (1.96 * sigma / sqrt((double)n) <= maxTolerance * mu)
+        break;
+    }
+  }
+#ifdef STANDIN_ADAPTIVE_COUNT_NOT_UPDATED
+  int count = num_samples;
+#else
+  int count = n;
+#endif
+  sampleBuffer.update_pixel(sum / (double)count, x, y);
+  sampleCountBuffer[x + y * sampleBuffer.w] = count;
+}

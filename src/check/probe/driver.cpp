@@ -651,6 +651,30 @@ static void run(State& st, Args& a, Reply& out) {
       m2 += delta * (v - mean);
     }
     out.vec(mean).vec(m2 / (double)(n - 1));
+  } else if (c == "pixels") {
+    size_t w = (size_t)a.count("width", 1, 4096);
+    size_t h = (size_t)a.count("height", 1, 4096);
+    size_t ns_aa = (size_t)a.count("samples a pixel", 1, 1 << 20);
+    size_t batch = (size_t)a.count("samples a batch", 0, 1 << 20);
+    double tolerance = a.num("tolerance");
+    size_t x0 = (size_t)a.count("x0", 0, w), y0 = (size_t)a.count("y0", 0, h);
+    size_t x1 = (size_t)a.count("x1", x0, w), y1 = (size_t)a.count("y1", y0, h);
+    a.done();
+    PathTracer* pt = need(st.tracer, "tracer");
+    pt->camera = need(st.camera, "camera");
+    pt->set_frame_size(w, h);
+    pt->ns_aa = ns_aa;
+    pt->samplesPerBatch = batch;
+    pt->maxTolerance = tolerance;
+    for (size_t y = y0; y < y1; ++y) {
+      for (size_t x = x0; x < x1; ++x) {
+        pt->sampleBuffer.data[x + y * w] = Vector3D(NaN);
+        pt->sampleCountBuffer[x + y * w] = -1;
+        pt->raytrace_pixel(x, y);
+        out.vec(pt->sampleBuffer.data[x + y * w]);
+        out.integer(pt->sampleCountBuffer[x + y * w]);
+      }
+    }
   } else if (c == "tracer") {
     size_t ns = (size_t)a.count("samples a light", 1, 1 << 20);
     size_t depth = (size_t)a.count("max ray depth", 0, 1000);

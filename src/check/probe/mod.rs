@@ -23,7 +23,8 @@
 //!   [`warp`]'s chi-square test against the pdfs it returns;
 //! - [`direct`]: the two direct-lighting estimators, their means under
 //!   an area light against the light reflected; [`bounces`]:
-//!   `at_least_one_bounce_radiance` in a furnace;
+//!   `at_least_one_bounce_radiance` in a furnace; [`pixel`]:
+//!   `raytrace_pixel` in a black one;
 //! - [`reflection`]: `BSDF::reflect` and `BSDF::refract`; [`specular`]:
 //!   `MirrorBSDF::sample_f` and `RefractionBSDF::sample_f`; [`glass`]:
 //!   `GlassBSDF::sample_f`, its choice of lobe by a binomial test;
@@ -57,6 +58,7 @@ pub mod lens;
 pub mod microfacet;
 pub mod microfacet_sample;
 pub mod picture;
+pub mod pixel;
 pub mod reflection;
 pub mod report;
 pub mod specular;
@@ -206,6 +208,13 @@ pub const PROBES: &[Probe] = &[
             "PathTracer::estimate_direct_lighting_hemisphere",
         ],
         run: bounces::at_least_one_bounce,
+    },
+    Probe {
+        function: "PathTracer::raytrace_pixel",
+        file: "src/pathtracer/pathtracer.cpp",
+        part: 5,
+        needs: &["Camera::generate_ray", "BVHAccel::intersect"],
+        run: pixel::raytrace_pixel,
     },
     Probe {
         function: "BSDF::reflect",
