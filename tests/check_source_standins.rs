@@ -77,6 +77,7 @@ standin_mistakes! {
         in "PathTracer::at_least_one_bounce_radiance";
     o0_accumulates: "o0-accumulates" in "PathTracer::at_least_one_bounce_radiance";
     adaptive_count_not_updated: "adaptive-count-not-updated" in "PathTracer::raytrace_pixel";
+    adaptive_n_not_square_rooted: "adaptive-n-not-square-rooted" in "PathTracer::raytrace_pixel";
 }
 
 #[test]

@@ -412,8 +412,13 @@ void PathTracer::raytrace_pixel(size_t x, size_t y) {
     if (samplesPerBatch > 0 && n % samplesPerBatch == 0 && n < num_samples) {
       double mu = s1 / n;
       double sigma = sqrt(std::max(0.0, (s2 - s1 * s1 / n) / (n - 1)));
+#ifdef STANDIN_ADAPTIVE_N_NOT_SQUARE_ROOTED
+      if (1.96 * sigma / n <= maxTolerance * mu)
+        break;
+#else
       if (1.96 * sigma / sqrt((double)n) <= maxTolerance * mu)
         break;
+#endif
     }
   }
 #ifdef STANDIN_ADAPTIVE_COUNT_NOT_UPDATED

@@ -213,7 +213,12 @@ pub const PROBES: &[Probe] = &[
         function: "PathTracer::raytrace_pixel",
         file: "src/pathtracer/pathtracer.cpp",
         part: 5,
-        needs: &["Camera::generate_ray", "BVHAccel::intersect"],
+        needs: &[
+            "Camera::generate_ray",
+            "BVHAccel::intersect",
+            "PathTracer::estimate_direct_lighting_hemisphere",
+            "PathTracer::at_least_one_bounce_radiance",
+        ],
         run: pixel::raytrace_pixel,
     },
     Probe {

@@ -12,11 +12,19 @@
 //!   `Le`, or `Le (n + 1) / n` for the staff's library, which sums the next
 //!   sample too (maintainers/checker.md, part 5).
 //!
+//! - In a grey furnace of albedo 0.9 at `max_ray_depth = 1` (`-H`, one
+//!   light sample), a sample is `Le (1 + 2 rho cos theta)` with `cos
+//!   theta` uniform: `sigma / mu = 0.27`. With `ns_aa = 256`, batches of
+//!   64 and `maxTolerance` 0.03, `I / mu = 1.96 (0.27) / sqrt(n)` is 0.067,
+//!   0.047 and 0.039 at the three tests: no pixel stops (count 256). An
+//!   `I` over `n` instead of `sqrt(n)` is 0.008 at the first: every pixel
+//!   stops at 64.
+//!
 //! A count left at `ns_aa` with the value `Le n / ns_aa` is the catalogued
-//! `adaptive-count-not-updated`. The mistakes in the convergence test
-//! itself (`adaptive-n-not-square-rooted`, `adaptive-population-variance`)
-//! move the stopping time of noisy pixels only: the image checks of part
-//! 5 judge them.
+//! `adaptive-count-not-updated`; stopping at 64 in the grey furnace,
+//! `adaptive-n-not-square-rooted`. `adaptive-population-variance` (`n`
+//! for `n - 1`) moves the stopping time by too little to tell: the image
+//! checks of part 5 judge it.
 
 use glam::DVec3;
 
@@ -34,6 +42,11 @@ const BATCH: usize = 8;
 /// (the staff's library stamps its mark over the bottom-left corner).
 const SIDE: usize = 4;
 const BLOCK: &str = "238 178 242 182";
+/// The grey furnace's albedo, and its pixels' samples, batch, tolerance.
+const GREY: f64 = 0.9;
+const NOISY_AA: usize = 256;
+const NOISY_BATCH: usize = 64;
+const NOISY_TOLERANCE: f64 = 0.03;
 
 /// Probes `raytrace_pixel`.
 pub fn raytrace_pixel(driver: &Driver) -> Verdict {
@@ -45,13 +58,21 @@ pub fn raytrace_pixel(driver: &Driver) -> Verdict {
         "camera 50 40 480 360 0 0 0 0.3 1.2 0.5 0.01 100".into(),
         format!("pixels 480 360 {NS_AA} {NS_AA} 0.05 {BLOCK}"),
         format!("pixels 480 360 {NS_AA} {BATCH} 0.05 {BLOCK}"),
+        format!(
+            "furnace {} {}",
+            tokens(DVec3::splat(GREY)),
+            tokens(DVec3::ONE)
+        ),
+        "tracer 1 1 1".into(),
+        "accumulate 1".into(),
+        format!("pixels 480 360 {NOISY_AA} {NOISY_BATCH} {NOISY_TOLERANCE} {BLOCK}"),
     ];
     let t = match driver.run("raytrace_pixel", commands) {
         Ok(t) => t,
         Err(e) => return Verdict::Broken(e),
     };
     let mut runs = Vec::new();
-    for at in [4, 5] {
+    for at in [4, 5, 9] {
         match t.exactly(at, 4 * SIDE * SIDE) {
             Ok(v) => runs.push(
                 v.chunks(4)
@@ -128,6 +149,32 @@ pub fn raytrace_pixel(driver: &Driver) -> Verdict {
             )
         }));
     }
+    if !cases.all_pass() {
+        return cases.verdict(None);
+    }
+    let noisy = &runs[2];
+    let at_first = noisy
+        .iter()
+        .all(|(_, n)| *n >= NOISY_BATCH as f64 && *n <= NOISY_BATCH as f64 + 1.0);
+    for (v, n) in noisy {
+        cases.record((*n != NOISY_AA as f64).then(|| {
+            failure(
+                format!(
+                    "raytrace_pixel of the {SIDE} x {SIDE} pixels at (238, 178) of a 480 x 360 image in a closed box of albedo {GREY} glowing (1, 1, 1), max_ray_depth = 1, -H, ns_aa = {NOISY_AA}, samplesPerBatch = {NOISY_BATCH}, maxTolerance = {NOISY_TOLERANCE}"
+                ),
+                format!(
+                    "no pixel stopping: sigma / mu is about 0.27, so 1.96 sigma / sqrt(n) stays above {NOISY_TOLERANCE} mu at n = 64, 128 and 192; count {NOISY_AA}"
+                ),
+                format!("{}, count {n}", show(*v)),
+                if at_first {
+                    "the pixels stop at the first test, where 1.96 sigma / sqrt(n) is still twice the tolerance: I is divided by n, not sqrt(n)"
+                } else {
+                    "noisy pixels stop before 1.96 sigma / sqrt(n) falls under maxTolerance mu"
+                },
+                at_first.then_some(Mistake::AdaptiveNotSquareRooted),
+            )
+        }));
+    }
     let counts: Vec<String> = {
         let mut c: Vec<i64> = adaptive.iter().map(|(_, n)| *n as i64).collect();
         c.sort_unstable();
@@ -135,7 +182,7 @@ pub fn raytrace_pixel(driver: &Driver) -> Verdict {
         c.iter().map(i64::to_string).collect()
     };
     cases.verdict(Some(format!(
-        "every pixel {} from {NS_AA} samples; with batches of {BATCH} each stops, count {}",
+        "every pixel {} from {NS_AA} samples; with batches of {BATCH} each stops, count {}; noisy pixels take all {NOISY_AA}",
         show(GLOW),
         counts.join(" or ")
     )))
