@@ -12,18 +12,18 @@
 //!
 //! so `A(m) = sum_{k=1..m} rho^k Le` and `N(m) = rho^m Le`, whatever the
 //! Russian roulette (it divides by its probability, so the means stay).
-//! The mean of many calls is z-tested against them (as [`direct`]'s), at
+//! The mean of many calls is z-tested against them ([`means`]), at
 //! `m = 3`, with `-o 1`, and with `-o 0` where the tree has the flag
 //! (`isAccumBounces`, the 2025 starter's). A failure names the catalogued
 //! mistake whose recursion ([`Model`]) fits every configuration.
 //!
-//! [`direct`]: super::direct
+//! [`means`]: super::means
 
 use glam::DVec3;
 
-use super::direct::{fits, score, z_critical_of, Moments, CALLS};
 use super::driver::Driver;
 use super::geometry::{num, show, tokens};
+use super::means::{self, always, fits, read, Moments, CALLS};
 use super::verdict::{failure, Verdict};
 use crate::mistakes::Mistake;
 
@@ -132,68 +132,51 @@ pub fn at_least_one_bounce(driver: &Driver) -> Verdict {
         Ok(t) => t,
         Err(e) => return Verdict::Broken(e),
     };
-    let moments = |at: usize| -> Result<(DVec3, DVec3), Verdict> {
-        let v = t
-            .exactly(at, 6)
-            .map_err(|stop| Verdict::stopped(&stop, t.command(at)))?;
-        Ok((DVec3::new(v[0], v[1], v[2]), DVec3::new(v[3], v[4], v[5])))
-    };
     let has_flag = match t.exactly(2, 1) {
         Ok(v) => v[0] == 1.0,
         Err(stop) => return Verdict::stopped(&stop, t.command(2)),
     };
-    // The configurations: -o 1, then -o 0 where the tree has the flag
-    // (without it, the 2023 starters' accumulate, and the second run
-    // repeats the first).
-    let mut runs: Vec<((DVec3, DVec3), bool)> = Vec::new();
-    for (at, accumulate) in [(3, true), (5, false)] {
-        if !accumulate && !has_flag {
-            continue;
-        }
-        match moments(at) {
-            Ok(m) => runs.push((m, accumulate)),
-            Err(v) => return v,
-        }
-    }
-    let always = |value: DVec3| {
-        runs.iter()
-            .all(|((m, v), _)| *m == value && *v == DVec3::ZERO)
+    // The configurations, by whether they accumulate: -o 1, then -o 0
+    // where the tree has the flag (without it, the 2023 starters'
+    // accumulate, and the second run repeats the first).
+    let configurations: Vec<(usize, bool)> = [(3, true), (5, false)]
+        .into_iter()
+        .filter(|(_, accumulate)| *accumulate || has_flag)
+        .collect();
+    let observed: Moments = match configurations.iter().map(|(at, _)| read(&t, *at)).collect() {
+        Ok(m) => m,
+        Err(v) => return v,
     };
-    if always(DVec3::ZERO) {
+    if always(&observed, DVec3::ZERO) {
         return Verdict::NotWritten(
             "it returns black every time, the starter's `return L_out;` of (0, 0, 0)".into(),
         );
     }
-    if always(DVec3::ONE) {
+    if always(&observed, DVec3::ONE) {
         return Verdict::NotWritten(
             "it returns (1, 1, 1) every time, as the starter's one_bounce_radiance does".into(),
         );
     }
-    let observed: Moments = runs.iter().map(|(m, _)| *m).collect();
     let expect = |model: Model| -> Vec<DVec3> {
-        runs.iter()
+        configurations
+            .iter()
             .map(|(_, accumulate)| model.mean(DEPTH, *accumulate))
             .collect()
     };
     let right = expect(Model::default());
     if fits(&observed, &right) {
-        let largest = observed
-            .iter()
-            .zip(&right)
-            .map(|(m, r)| score(m, *r))
-            .fold(0.0, f64::max);
         return Verdict::Pass {
-            cases: CALLS * runs.len(),
+            cases: CALLS * observed.len(),
             note: Some(format!(
                 "in the furnace, {} with -o 1{}, as sum rho^k Le (largest |z| {} of {})",
                 show(observed[0].0),
-                if runs.len() > 1 {
+                if observed.len() > 1 {
                     format!(", {} with -o 0", show(observed[1].0))
                 } else {
                     String::new()
                 },
-                num(largest),
-                num(z_critical_of(runs.len()))
+                num(means::largest(&observed, &right)),
+                num(means::z_critical(observed.len()))
             )),
         };
     }
@@ -201,10 +184,9 @@ pub fn at_least_one_bounce(driver: &Driver) -> Verdict {
         .into_iter()
         .find(|(_, model)| fits(&observed, &expect(*model)))
         .map(|(m, _)| m);
-    let worst = (0..runs.len())
-        .max_by(|a, b| score(&observed[*a], right[*a]).total_cmp(&score(&observed[*b], right[*b])))
-        .unwrap_or(0);
-    let flag = if runs[worst].1 { "-o 1" } else { "-o 0" };
+    let worst = means::worst(&observed, &right);
+    let accumulates = configurations[worst].1;
+    let flag = if accumulates { "-o 1" } else { "-o 0" };
     Verdict::Fail(failure(
         format!(
             "{CALLS} calls at the floor of a closed cube whose walls are diffuse of albedo {} and glow {} (the furnace), max_ray_depth = {DEPTH}, {flag}, -H, ns_area_light = {NS}",
@@ -214,7 +196,7 @@ pub fn at_least_one_bounce(driver: &Driver) -> Verdict {
         format!(
             "a mean of {} ({})",
             show(right[worst]),
-            if runs[worst].1 {
+            if accumulates {
                 "rho Le + rho^2 Le + rho^3 Le"
             } else {
                 "rho^3 Le, the third bounce alone"

@@ -25,9 +25,9 @@
 //! `d`: cs184-format.md, section 8), so its mean is
 //! `rho / pi L integral cos_i max(cos_l, 0) / d^k dA` with the `k` the
 //! light's pdfs show (read from it first). The integrals are midpoint sums
-//! ([`integral`]). Each mean is held to its value by a z-test per point
-//! and channel (the calls' own variance, alpha 1e-6 over the six); a
-//! failure names the catalogued mistake whose value passes the same test.
+//! ([`integral`]). Each mean is held to its value by [`means`]' z-test
+//! per point and channel; a failure names the catalogued mistake whose
+//! value passes the same test.
 
 use std::f64::consts::PI;
 
@@ -35,8 +35,8 @@ use glam::DVec3;
 
 use super::driver::Driver;
 use super::geometry::{num, show, tokens};
+use super::means::{self, always, fits, read, Moments, CALLS};
 use super::verdict::{failure, Verdict};
-use crate::check::stats::normal_upper_quantile;
 use crate::mistakes::Mistake;
 
 /// The light: radiance, centre, its two sides, the way it faces.
@@ -46,11 +46,10 @@ const DX: DVec3 = DVec3::new(1.0, 0.0, 0.0);
 const DY: DVec3 = DVec3::new(0.0, 1.0, 0.0);
 const FACING: DVec3 = DVec3::new(0.0, 0.0, -1.0);
 const ALBEDO: DVec3 = DVec3::new(0.5, 0.6, 0.7);
-/// `ns_area_light`, and the calls at each point.
+/// `ns_area_light`.
 const NS: usize = 4;
-pub(super) const CALLS: usize = 20_000;
-/// The level of the z-tests, over all six.
-const ALPHA: f64 = 1e-6;
+/// The light's samples read to tell its pdf.
+const LIGHT_SAMPLES: usize = 16;
 /// Midpoint cells along each side of the light.
 const CELLS: usize = 400;
 
@@ -136,9 +135,6 @@ pub fn importance(driver: &Driver) -> Verdict {
     probe(driver, Estimator::Importance)
 }
 
-/// The mean and variance of the calls at each point.
-pub(super) type Moments = Vec<(DVec3, DVec3)>;
-
 fn probe(driver: &Driver, which: Estimator) -> Verdict {
     let word = match which {
         Estimator::Hemisphere => "hemi",
@@ -165,7 +161,7 @@ fn probe(driver: &Driver, which: Estimator) -> Verdict {
             tokens(DY),
             tokens(FACING)
         ),
-        format!("light_sample {} 16", tokens(POINTS[1].at)),
+        format!("light_sample {} {LIGHT_SAMPLES}", tokens(POINTS[1].at)),
         format!("tracer {NS} 1 0"),
     ]);
     // The first `direct` command's index.
@@ -210,17 +206,14 @@ fn probe(driver: &Driver, which: Estimator) -> Verdict {
             1.0
         }
     };
-    let mut moments: Moments = Vec::new();
-    for at in first..first + POINTS.len() {
-        match t.exactly(at, 6) {
-            Ok(v) => moments.push((DVec3::new(v[0], v[1], v[2]), DVec3::new(v[3], v[4], v[5]))),
-            Err(stop) => return Verdict::stopped(&stop, t.command(at)),
-        }
-    }
-    if moments
-        .iter()
-        .all(|(m, v)| *m == DVec3::ONE && *v == DVec3::ZERO)
+    let moments: Moments = match (first..first + POINTS.len())
+        .map(|at| read(&t, at))
+        .collect()
     {
+        Ok(m) => m,
+        Err(v) => return v,
+    };
+    if always(&moments, DVec3::ONE) {
         return Verdict::NotWritten(
             "it returns (1, 1, 1) every time, the starter's `return Vector3D(1.0);`".into(),
         );
@@ -235,11 +228,7 @@ fn probe(driver: &Driver, which: Estimator) -> Verdict {
             Estimator::Importance => f * integral(*p, |ci, cl, d| ci * cl.max(0.0) / d.powi(k)),
         })
         .collect();
-    let largest = moments
-        .iter()
-        .zip(&right)
-        .map(|(m, r)| score(m, *r))
-        .fold(0.0, f64::max);
+    let z = means::z_critical(POINTS.len());
     if fits(&moments, &right) {
         return Verdict::Pass {
             cases: CALLS * POINTS.len(),
@@ -248,8 +237,8 @@ fn probe(driver: &Driver, which: Estimator) -> Verdict {
                 show(moments[0].0),
                 show(moments[2].0),
                 show(moments[3].0),
-                num(largest),
-                num(z_critical()),
+                num(means::largest(&moments, &right)),
+                num(z),
                 if which == Estimator::Importance && k == 1 {
                     " (with the starter's AreaLight pdf, d / (A cos_l))"
                 } else {
@@ -262,9 +251,7 @@ fn probe(driver: &Driver, which: Estimator) -> Verdict {
         .into_iter()
         .find(|(_, values)| fits(&moments, values))
         .map(|(m, _)| m);
-    let worst = (0..POINTS.len())
-        .max_by(|a, b| score(&moments[*a], right[*a]).total_cmp(&score(&moments[*b], right[*b])))
-        .unwrap_or(0);
+    let worst = means::worst(&moments, &right);
     let (mean, var) = moments[worst];
     let se = (var / CALLS as f64).max(DVec3::ZERO);
     let se = DVec3::new(se.x.sqrt(), se.y.sqrt(), se.z.sqrt());
@@ -285,7 +272,7 @@ fn probe(driver: &Driver, which: Estimator) -> Verdict {
         format!(
             "a mean of {} (the light the point reflects), give or take {}",
             show(right[worst]),
-            show(se * z_critical())
+            show(se * z)
         ),
         format!("a mean of {}", show(mean)),
         if right[worst] == DVec3::ZERO {
@@ -304,7 +291,7 @@ fn probe(driver: &Driver, which: Estimator) -> Verdict {
 /// (`d^k / (A cos_l)`), read from the `light_sample` answers.
 fn light_power(t: &super::driver::Transcript, at: usize) -> Result<i32, Verdict> {
     let v = t
-        .exactly(at, 16 * 8)
+        .exactly(at, LIGHT_SAMPLES * 8)
         .map_err(|stop| Verdict::stopped(&stop, t.command(at)))?;
     let area = DX.length() * DY.length();
     for k in [2, 1] {
@@ -368,40 +355,6 @@ fn suspects(
     }
 }
 
-/// The z-test's critical value for each channel of `points` means.
-pub(super) fn z_critical_of(points: usize) -> f64 {
-    normal_upper_quantile(ALPHA / (2.0 * 3.0 * points as f64))
-}
-
-/// [`z_critical_of`] the points here.
-fn z_critical() -> f64 {
-    z_critical_of(POINTS.len())
-}
-
-/// The largest `|z|` of a point's channels against `want`, its mean of
-/// [`CALLS`] calls.
-pub(super) fn score((mean, var): &(DVec3, DVec3), want: DVec3) -> f64 {
-    (0..3)
-        .map(|c| {
-            let se = (var[c] / CALLS as f64).max(0.0).sqrt();
-            let off = (mean[c] - want[c]).abs();
-            if se > 0.0 {
-                off / se
-            } else if off <= 1e-9 * want[c].abs().max(1e-12) {
-                0.0
-            } else {
-                f64::INFINITY
-            }
-        })
-        .fold(0.0, f64::max)
-}
-
-/// Whether every point's mean passes its z-test against `values`.
-pub(super) fn fits(moments: &Moments, values: &[DVec3]) -> bool {
-    let z = z_critical_of(moments.len());
-    moments.iter().zip(values).all(|(m, v)| score(m, *v) <= z)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -426,16 +379,5 @@ mod tests {
         let corner = (a / s * (a / s).atan() * 2.0) / (2.0 * PI);
         let want = PI * 4.0 * corner;
         assert!((sum - want).abs() < 1e-5 * want, "{sum} {want}");
-    }
-
-    #[test]
-    fn a_mean_off_by_its_noise_fits_and_one_off_by_a_factor_does_not() {
-        let var = DVec3::splat(1.0);
-        let right = vec![DVec3::splat(2.0); 4];
-        let se = (1.0 / CALLS as f64).sqrt();
-        let near: Moments = vec![(DVec3::splat(2.0 + 3.0 * se), var); 4];
-        assert!(fits(&near, &right));
-        let off: Moments = vec![(DVec3::splat(2.0 * 1.05), var); 4];
-        assert!(!fits(&off, &right));
     }
 }

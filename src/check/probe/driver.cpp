@@ -411,9 +411,22 @@ bool set_accumulate(P*, bool, long) {
   return false;
 }
 
+// `MEAN(C) VAR(C)` of the values of n calls of `call`: their mean and
+// sample variance per channel (Welford's running sums).
+template <typename Call> static void moments(long long n, Reply& out, Call call) {
+  Vector3D mean, m2;
+  for (long long k = 1; k <= n; ++k) {
+    Vector3D v = call();
+    Vector3D delta = v - mean;
+    mean += delta / (double)k;
+    m2 += delta * (v - mean);
+  }
+  out.vec(mean).vec(m2 / (double)(n - 1));
+}
+
 // One of the direct-lighting estimators called N times at the hit
-// `o + t d` with normal `n` on a DiffuseBSDF(albedo): the mean and the
-// sample variance of its value, per channel (Welford's sums).
+// `o + t d` with normal `n` on a DiffuseBSDF(albedo): `moments` of its
+// values.
 static void direct(State& st, Args& a, Reply& out) {
   const std::string& which = a.word("hemi or importance");
   long long n = a.count("call count", 2, 10000000);
@@ -429,15 +442,11 @@ static void direct(State& st, Args& a, Reply& out) {
   isect.t = t;
   isect.n = normal;
   isect.bsdf = new DiffuseBSDF(albedo);
-  Vector3D mean, m2;
-  for (long long k = 1; k <= n; ++k) {
-    Vector3D v = which == "hemi" ? pt->estimate_direct_lighting_hemisphere(r, isect)
-                                 : pt->estimate_direct_lighting_importance(r, isect);
-    Vector3D delta = v - mean;
-    mean += delta / (double)k;
-    m2 += delta * (v - mean);
-  }
-  out.vec(mean).vec(m2 / (double)(n - 1));
+  bool hemi = which == "hemi";
+  moments(n, out, [&]() {
+    return hemi ? pt->estimate_direct_lighting_hemisphere(r, isect)
+                : pt->estimate_direct_lighting_importance(r, isect);
+  });
 }
 
 static void set_bsdf(State& st, BSDF* b, MicrofacetBSDF* m, Reply& out) {
@@ -643,14 +652,7 @@ static void run(State& st, Args& a, Reply& out) {
     isect.t = t;
     isect.n = normal;
     isect.bsdf = need(st.furnace, "furnace");
-    Vector3D mean, m2;
-    for (long long k = 1; k <= n; ++k) {
-      Vector3D v = pt->at_least_one_bounce_radiance(r, isect);
-      Vector3D delta = v - mean;
-      mean += delta / (double)k;
-      m2 += delta * (v - mean);
-    }
-    out.vec(mean).vec(m2 / (double)(n - 1));
+    moments(n, out, [&]() { return pt->at_least_one_bounce_radiance(r, isect); });
   } else if (c == "pixels") {
     size_t w = (size_t)a.count("width", 1, 4096);
     size_t h = (size_t)a.count("height", 1, 4096);

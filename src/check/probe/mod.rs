@@ -55,6 +55,7 @@ pub mod envmap;
 pub mod geometry;
 pub mod glass;
 pub mod lens;
+pub mod means;
 pub mod microfacet;
 pub mod microfacet_sample;
 pub mod picture;
